@@ -1,0 +1,86 @@
+#include "command_line.h"
+
+namespace stereonav::app {
+
+CommandLine::CommandLine(std::vector<std::string> arguments, std::set<std::string> flag_names)
+    : flag_names_(std::move(flag_names)) {
+  for (size_t i = 0; i < arguments.size(); ++i) {
+    const std::string& argument = arguments[i];
+    if (argument.rfind("--", 0) != 0 || argument.size() == 2) {
+      throw UsageError("unexpected argument '" + argument + "'");
+    }
+    std::string name = argument.substr(2);
+    const auto equals = name.find('=');
+    if (equals != std::string::npos) {
+      values_.emplace(name.substr(0, equals), name.substr(equals + 1));
+    } else if (flag_names_.count(name)) {
+      flags_.insert(name);
+    } else if (i + 1 < arguments.size()) {
+      values_.emplace(name, arguments[++i]);
+    } else {
+      throw UsageError("--" + name + " needs a value");
+    }
+  }
+}
+
+std::optional<std::string> CommandLine::value(const std::string& name) {
+  declared_.insert(name);
+  const auto range = values_.equal_range(name);
+  if (range.first == range.second) return std::nullopt;
+  if (std::next(range.first) != range.second) throw UsageError("--" + name + " given more than once");
+  return range.first->second;
+}
+
+std::string CommandLine::required(const std::string& name) {
+  auto result = value(name);
+  if (!result) throw UsageError("--" + name + " is required");
+  return *result;
+}
+
+std::vector<std::string> CommandLine::values(const std::string& name) {
+  declared_.insert(name);
+  std::vector<std::string> result;
+  const auto range = values_.equal_range(name);
+  for (auto it = range.first; it != range.second; ++it) result.push_back(it->second);
+  return result;
+}
+
+bool CommandLine::flag(const std::string& name) {
+  declared_.insert(name);
+  return flags_.count(name) > 0;
+}
+
+std::optional<int> CommandLine::intValue(const std::string& name) {
+  const auto text = value(name);
+  if (!text) return std::nullopt;
+  try {
+    size_t used = 0;
+    const int result = std::stoi(*text, &used);
+    if (used == text->size()) return result;
+  } catch (const std::exception&) {
+  }
+  throw UsageError("--" + name + ": expected an integer, got '" + *text + "'");
+}
+
+std::optional<double> CommandLine::doubleValue(const std::string& name) {
+  const auto text = value(name);
+  if (!text) return std::nullopt;
+  try {
+    size_t used = 0;
+    const double result = std::stod(*text, &used);
+    if (used == text->size()) return result;
+  } catch (const std::exception&) {
+  }
+  throw UsageError("--" + name + ": expected a number, got '" + *text + "'");
+}
+
+void CommandLine::rejectUnknown() const {
+  for (const auto& [name, unused] : values_) {
+    if (!declared_.count(name)) throw UsageError("unknown option --" + name);
+  }
+  for (const auto& name : flags_) {
+    if (!declared_.count(name)) throw UsageError("unknown option --" + name);
+  }
+}
+
+}  // namespace stereonav::app

@@ -1,0 +1,39 @@
+#pragma once
+
+#include <map>
+#include <optional>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace stereonav::app {
+
+// A usage mistake; what() is the one-line message printed before exiting with status 2.
+class UsageError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// GNU-style "--name value" / "--flag" arguments of one subcommand. Every option the command
+// understands is declared through one of the getters; rejectUnknown() then reports the rest.
+class CommandLine {
+ public:
+  CommandLine(std::vector<std::string> arguments, std::set<std::string> flag_names);
+
+  std::optional<std::string> value(const std::string& name);
+  std::string required(const std::string& name);
+  std::vector<std::string> values(const std::string& name);
+  bool flag(const std::string& name);
+  std::optional<int> intValue(const std::string& name);
+  std::optional<double> doubleValue(const std::string& name);
+  void rejectUnknown() const;
+
+ private:
+  std::multimap<std::string, std::string> values_;
+  std::set<std::string> flags_;
+  std::set<std::string> flag_names_;
+  std::set<std::string> declared_;
+};
+
+}  // namespace stereonav::app

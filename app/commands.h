@@ -1,0 +1,12 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace stereonav::app {
+
+// One function per subcommand: arguments in (after the subcommand name), exit status out.
+// Each lives in its own <name>_command.cc and is listed in main.cc.
+int runDisparityCommand(const std::vector<std::string>& arguments);
+
+}  // namespace stereonav::app

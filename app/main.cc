@@ -1,0 +1,52 @@
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "command_line.h"
+#include "commands.h"
+#include "common/ini_section.h"
+
+namespace {
+
+struct Command {
+  const char* name;
+  const char* summary;
+  int (*run)(const std::vector<std::string>&);
+};
+
+const Command kCommands[] = {
+    {"disparity", "disparity image of a rectified rig frame (PFM or 16-bit PNG)",
+     stereonav::app::runDisparityCommand},
+};
+
+void printUsage(std::ostream& out) {
+  out << "usage: stereonav <command> [options]\n\ncommands:\n";
+  for (const auto& command : kCommands) out << "  " << command.name << "\t" << command.summary << "\n";
+  out << "\nRun 'stereonav <command> --help' for a command's options.\n";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 2 || std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h") {
+    printUsage(argc < 2 ? std::cerr : std::cout);
+    return argc < 2 ? 2 : 0;
+  }
+  const std::string name = argv[1];
+  const std::vector<std::string> arguments(argv + 2, argv + argc);
+  for (const auto& command : kCommands) {
+    if (name != command.name) continue;
+    try {
+      return command.run(arguments);
+    } catch (const stereonav::app::UsageError& error) {
+      std::cerr << "stereonav " << name << ": " << error.what() << "\n";
+      return 2;
+    } catch (const std::exception& error) {
+      std::cerr << "stereonav " << name << ": " << error.what() << "\n";
+      return 1;
+    }
+  }
+  std::cerr << "stereonav: unknown command '" << name << "'\n";
+  printUsage(std::cerr);
+  return 2;
+}

@@ -1,0 +1,88 @@
+#include "common/ini_section.h"
+
+#include <algorithm>
+#include <vector>
+
+namespace stereonav {
+
+IniSection::IniSection(const mrpt::config::CConfigFileBase& config, std::string section)
+    : config_(config), section_(std::move(section)) {}
+
+bool IniSection::has(const std::string& key) const { return config_.keyExists(section_, key); }
+
+double IniSection::getDouble(const std::string& key, double default_value) {
+  known_keys_.insert(key);
+  try {
+    return config_.read_double(section_, key, default_value);
+  } catch (const std::exception&) {
+    throw ConfigError("[" + section_ + "] " + key + ": expected a number, got '" +
+                      config_.read_string(section_, key, "") + "'");
+  }
+}
+
+int IniSection::getInt(const std::string& key, int default_value) {
+  known_keys_.insert(key);
+  const std::string text = config_.read_string(section_, key, "");
+  if (text.empty()) return default_value;
+  try {
+    size_t used = 0;
+    const int value = std::stoi(text, &used);
+    if (used == text.size()) return value;
+  } catch (const std::exception&) {
+  }
+  throw ConfigError("[" + section_ + "] " + key + ": expected an integer, got '" + text + "'");
+}
+
+bool IniSection::getBool(const std::string& key, bool default_value) {
+  known_keys_.insert(key);
+  std::string text = config_.read_string(section_, key, "");
+  if (text.empty()) return default_value;
+  std::transform(text.begin(), text.end(), text.begin(), ::tolower);
+  if (text == "1" || text == "true" || text == "yes" || text == "on") return true;
+  if (text == "0" || text == "false" || text == "no" || text == "off") return false;
+  throw ConfigError("[" + section_ + "] " + key + ": expected true or false, got '" + text + "'");
+}
+
+std::string IniSection::getString(const std::string& key, const std::string& default_value) {
+  known_keys_.insert(key);
+  return config_.read_string(section_, key, default_value);
+}
+
+void IniSection::rejectUnknownKeys() const {
+  std::vector<std::string> keys;
+  config_.getAllKeys(section_, keys);
+  for (const auto& key : keys) {
+    if (known_keys_.count(key)) continue;
+    std::string message = "[" + section_ + "] unknown key '" + key + "'";
+    const std::string nearest = nearestKey(key, known_keys_);
+    if (!nearest.empty()) message += " (did you mean '" + nearest + "'?)";
+    throw ConfigError(message);
+  }
+}
+
+std::string nearestKey(const std::string& key, const std::set<std::string>& known_keys) {
+  std::string best;
+  size_t best_distance = std::string::npos;
+  for (const auto& candidate : known_keys) {
+    // Levenshtein distance, one row at a time.
+    std::vector<size_t> row(candidate.size() + 1);
+    for (size_t j = 0; j < row.size(); ++j) row[j] = j;
+    for (size_t i = 1; i <= key.size(); ++i) {
+      size_t diagonal = row[0];
+      row[0] = i;
+      for (size_t j = 1; j <= candidate.size(); ++j) {
+        const size_t above = row[j];
+        const size_t substitution = diagonal + (::tolower(key[i - 1]) != ::tolower(candidate[j - 1]));
+        row[j] = std::min({row[j] + 1, row[j - 1] + 1, substitution});
+        diagonal = above;
+      }
+    }
+    if (row.back() < best_distance) {
+      best_distance = row.back();
+      best = candidate;
+    }
+  }
+  return best;
+}
+
+}  // namespace stereonav

@@ -1,0 +1,44 @@
+#pragma once
+
+#include <mrpt/config/CConfigFileBase.h>
+
+#include <set>
+#include <stdexcept>
+#include <string>
+
+namespace stereonav {
+
+// Thrown for any configuration mistake; what() is a one-line message naming the section and key.
+class ConfigError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Reads one section of an MRPT ini file and remembers every key it was asked for, so that after
+// loading, a key the user wrote but nothing reads (a typo) is reported with the nearest known key
+// instead of being silently ignored.
+class IniSection {
+ public:
+  IniSection(const mrpt::config::CConfigFileBase& config, std::string section);
+
+  const std::string& name() const { return section_; }
+  bool has(const std::string& key) const;
+
+  double getDouble(const std::string& key, double default_value);
+  int getInt(const std::string& key, int default_value);
+  bool getBool(const std::string& key, bool default_value);
+  std::string getString(const std::string& key, const std::string& default_value);
+
+  // Throws ConfigError naming the first key of the section that no getter asked for.
+  void rejectUnknownKeys() const;
+
+ private:
+  const mrpt::config::CConfigFileBase& config_;
+  std::string section_;
+  std::set<std::string> known_keys_;
+};
+
+// The known key closest to `key` by edit distance ("" if there are none).
+std::string nearestKey(const std::string& key, const std::set<std::string>& known_keys);
+
+}  // namespace stereonav
