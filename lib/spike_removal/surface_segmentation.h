@@ -1,0 +1,49 @@
+#pragma once
+
+#include <opencv2/core.hpp>
+
+#include <cstdint>
+#include <vector>
+
+#include "spike_removal/spike_removal_options.h"
+
+namespace stereonav {
+
+// Spike removal by surface segmentation (paper section 4.2). Mismatches come in small, locally
+// stable patches with sharp disparity jumps at all their borders, so they are found as small
+// surfaces: pixels are joined when they are neighbours (4- or 8-connected) and their disparities
+// differ by at most max_difference, and every surface of fewer than min_region_pixels pixels is
+// invalidated. A thin structure (a pole, a table edge) survives because it is joined to the larger
+// surface it stands on, which median and morphological filters cannot know (section 4.1).
+//
+// Two-pass union-find labelling: linear in the number of pixels. The buffers are kept between
+// frames, so a frame of an unchanged size allocates nothing.
+class SurfaceSegmentation {
+ public:
+  explicit SurfaceSegmentation(const SurfaceSegmentationOptions& options);
+
+  // Invalidates the small surfaces of `disparity` in place. `rejected` becomes a mask of the same
+  // size: 255 where this call invalidated a pixel, 0 elsewhere.
+  void apply(cv::Mat1f& disparity, cv::Mat1b& rejected);
+
+ private:
+  // First pass: provisional labels in labels_, label equivalences in parent_, pixels per
+  // provisional label in region_size_. Returns the number of labels used (including 0).
+  template <bool kEightConnected>
+  int32_t labelSurfaces(const cv::Mat1f& disparity);
+  template <bool kEightConnected, bool kHasLeft, bool kHasUp, bool kHasUpRight>
+  int32_t labelPixel(const float* row, const float* row_above, const int32_t* labels,
+                     const int32_t* labels_above, int x, int32_t& next_label);
+  int32_t join(int32_t label, int32_t neighbour_label);
+  int32_t findRoot(int32_t label);
+  // Second pass: marks every label whose whole surface is too small in reject_label_.
+  void classifyLabels(int32_t label_count);
+
+  SurfaceSegmentationOptions options_;
+  std::vector<int32_t> labels_;  // per pixel, row-major; 0 = invalid pixel
+  std::vector<int32_t> parent_;  // union-find forest over labels; parent_[l] <= l
+  std::vector<int32_t> region_size_;
+  std::vector<uint8_t> reject_label_;
+};
+
+}  // namespace stereonav
