@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "disparity/disparity_image.h"
+#include "rig/camera_rig.h"
 
 namespace stereonav {
 
@@ -12,9 +13,26 @@ namespace stereonav {
 // saw none.
 struct DisparityScan {
   std::vector<float> column_disparity;
+  // The image row of the pixel that gave column_disparity (-1 where invalid). A tilted camera sees
+  // the same disparity at different distances and bearings in different rows, so turning the scan
+  // into floor-plane geometry (a virtual laser scan) needs it. Empty when the scan was not made
+  // by ColumnProjector.
+  std::vector<int> column_row;
 
   int columns() const { return static_cast<int>(column_disparity.size()); }
   bool valid(int column) const { return isValidDisparity(column_disparity[column]); }
 };
+
+// Figure 5d: depth along the optical axis, Z = f B / d, per column; +inf where the column saw no
+// obstacle (like the disparity's invalid marker, "nothing there", never 0).
+inline std::vector<float> columnDepths(const DisparityScan& scan, const CameraRig& rig) {
+  std::vector<float> depths(scan.column_disparity.size(), kInvalidDisparity);
+  for (int column = 0; column < scan.columns(); ++column) {
+    if (scan.valid(column)) {
+      depths[column] = static_cast<float>(rig.depthForDisparity(scan.column_disparity[column]));
+    }
+  }
+  return depths;
+}
 
 }  // namespace stereonav

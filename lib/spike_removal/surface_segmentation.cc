@@ -32,71 +32,88 @@ int32_t SurfaceSegmentation::join(int32_t label, int32_t neighbour_label) {
   return b;
 }
 
+// Along a row, consecutive connected pixels form a run that shares one label. Within a run the
+// row above mostly holds one label too, so remembering the last label already joined skips almost
+// every union-find call; and pixels are counted per run, not with a store per pixel.
+struct SurfaceSegmentation::RowScan {
+  int32_t* labels;
+  int32_t label = 0;        // label of the current run, 0 = no run (last pixel invalid)
+  int32_t last_joined = 0;  // a label of the row above already joined with `label`
+  int32_t pending = 0;      // pixels of the current run not yet added to region_size_
+  int32_t next_label;
+};
+
 template <bool kEightConnected, bool kHasLeft, bool kHasUp, bool kHasUpRight>
-inline int32_t SurfaceSegmentation::labelPixel(const float* row, const float* row_above,
-                                               const int32_t* labels,
-                                               const int32_t* labels_above, int x,
-                                               int32_t& next_label) {
+inline void SurfaceSegmentation::labelPixel(const float* row, const float* row_above,
+                                            const int32_t* labels_above, int x, RowScan& scan) {
   const float d = row[x];
-  if (!isValidDisparity(d)) return 0;
   // An invalid neighbour is +inf, so |d - inf| <= max_difference is false: no separate test.
   const float max_difference = options_.max_difference;
   const auto connected = [d, max_difference](float neighbour) {
     return std::abs(d - neighbour) <= max_difference;
   };
-  int32_t label = 0;
-  if (kHasLeft && connected(row[x - 1])) label = labels[x - 1];
+  if (!(kHasLeft && isValidDisparity(d) && connected(row[x - 1]))) {
+    // The run ends here: credit its pixels before starting another.
+    region_size_[scan.label] += scan.pending;
+    scan.pending = 0;
+    scan.label = 0;
+    scan.last_joined = 0;
+    if (!isValidDisparity(d)) {
+      scan.labels[x] = 0;
+      return;
+    }
+  }
+  const auto joinAbove = [this, &scan](int32_t above) {
+    if (above == scan.last_joined) return;
+    scan.last_joined = above;
+    scan.label = join(scan.label, above);
+  };
   if (kHasUp) {
-    if (connected(row_above[x])) label = join(label, labels_above[x]);
-    if (kEightConnected && kHasLeft && connected(row_above[x - 1])) {
-      label = join(label, labels_above[x - 1]);
-    }
+    if (kEightConnected && kHasLeft && connected(row_above[x - 1])) joinAbove(labels_above[x - 1]);
+    if (connected(row_above[x])) joinAbove(labels_above[x]);
     if (kEightConnected && kHasUpRight && connected(row_above[x + 1])) {
-      label = join(label, labels_above[x + 1]);
+      joinAbove(labels_above[x + 1]);
     }
   }
-  if (label == 0) {
-    label = next_label++;
-    parent_[label] = label;
-    region_size_[label] = 0;
+  if (scan.label == 0) {
+    scan.label = scan.next_label++;
+    parent_[scan.label] = scan.label;
+    region_size_[scan.label] = 0;
   }
-  ++region_size_[label];
-  return label;
+  ++scan.pending;
+  scan.labels[x] = scan.label;
 }
 
 template <bool kEightConnected>
 int32_t SurfaceSegmentation::labelSurfaces(const cv::Mat1f& disparity) {
   const int width = disparity.cols;
-  int32_t next_label = 1;
+  RowScan scan;
+  scan.next_label = 1;
+  region_size_[0] = 0;  // collects the (ignored) count of "no run"
   for (int y = 0; y < disparity.rows; ++y) {
     const float* row = disparity[y];
-    int32_t* labels = labels_.data() + static_cast<size_t>(y) * width;
+    scan.labels = labels_.data() + static_cast<size_t>(y) * width;
     if (y == 0) {
-      labels[0] = labelPixel<kEightConnected, false, false, false>(row, nullptr, labels, nullptr,
-                                                                    0, next_label);
+      labelPixel<kEightConnected, false, false, false>(row, nullptr, nullptr, 0, scan);
       for (int x = 1; x < width; ++x) {
-        labels[x] = labelPixel<kEightConnected, true, false, false>(row, nullptr, labels,
-                                                                     nullptr, x, next_label);
+        labelPixel<kEightConnected, true, false, false>(row, nullptr, nullptr, x, scan);
       }
       continue;
     }
     const float* row_above = disparity[y - 1];
-    const int32_t* labels_above = labels - width;
+    const int32_t* labels_above = scan.labels - width;
     if (width == 1) {
-      labels[0] = labelPixel<kEightConnected, false, true, false>(row, row_above, labels,
-                                                                   labels_above, 0, next_label);
+      labelPixel<kEightConnected, false, true, false>(row, row_above, labels_above, 0, scan);
       continue;
     }
-    labels[0] = labelPixel<kEightConnected, false, true, true>(row, row_above, labels,
-                                                                labels_above, 0, next_label);
+    labelPixel<kEightConnected, false, true, true>(row, row_above, labels_above, 0, scan);
     for (int x = 1; x < width - 1; ++x) {
-      labels[x] = labelPixel<kEightConnected, true, true, true>(row, row_above, labels,
-                                                                 labels_above, x, next_label);
+      labelPixel<kEightConnected, true, true, true>(row, row_above, labels_above, x, scan);
     }
-    labels[width - 1] = labelPixel<kEightConnected, true, true, false>(
-        row, row_above, labels, labels_above, width - 1, next_label);
+    labelPixel<kEightConnected, true, true, false>(row, row_above, labels_above, width - 1, scan);
   }
-  return next_label;
+  region_size_[scan.label] += scan.pending;
+  return scan.next_label;
 }
 
 void SurfaceSegmentation::classifyLabels(int32_t label_count) {

@@ -31,9 +31,10 @@ class SurfaceSegmentation {
   // provisional label in region_size_. Returns the number of labels used (including 0).
   template <bool kEightConnected>
   int32_t labelSurfaces(const cv::Mat1f& disparity);
+  struct RowScan;  // the first pass's state while it walks along one row
   template <bool kEightConnected, bool kHasLeft, bool kHasUp, bool kHasUpRight>
-  int32_t labelPixel(const float* row, const float* row_above, const int32_t* labels,
-                     const int32_t* labels_above, int x, int32_t& next_label);
+  void labelPixel(const float* row, const float* row_above, const int32_t* labels_above, int x,
+                  RowScan& scan);
   int32_t join(int32_t label, int32_t neighbour_label);
   int32_t findRoot(int32_t label);
   // Second pass: marks every label whose whole surface is too small in reject_label_.

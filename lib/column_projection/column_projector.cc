@@ -1,0 +1,92 @@
+#include "column_projection/column_projector.h"
+
+#include <algorithm>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace stereonav {
+namespace {
+
+struct DisparityInterval {
+  double lowest;
+  double highest;
+};
+
+// The disparities d > 0 for which mount_z + k / d lies in (floor_clearance, robot_height].
+DisparityInterval bodyVolumeInterval(double k, double mount_z, const ProjectionOptions& options) {
+  const double clearance = options.floor_clearance_m;
+  const double height = options.robot_height_m;
+  constexpr DisparityInterval kEmpty{1.0, 0.0};
+  DisparityInterval interval{std::numeric_limits<float>::min(), std::numeric_limits<float>::max()};
+  if (k == 0.0) {
+    // A ray parallel to the floor stays at the camera's height whatever the disparity.
+    return clearance < mount_z && mount_z <= height ? interval : kEmpty;
+  }
+  if (k > 0.0) {
+    // Looking up: the point comes down towards mount_z as d grows.
+    if (height <= mount_z) return kEmpty;
+    interval.lowest = std::max(interval.lowest, k / (height - mount_z));
+    if (clearance >= mount_z) interval.highest = std::min(interval.highest, k / (clearance - mount_z));
+  } else {
+    // Looking down: the point rises towards mount_z as d grows.
+    if (clearance >= mount_z) return kEmpty;
+    interval.lowest = std::max(interval.lowest, -k / (mount_z - clearance));
+    if (height < mount_z) interval.highest = std::min(interval.highest, -k / (mount_z - height));
+  }
+  return interval.lowest <= interval.highest ? interval : kEmpty;
+}
+
+}  // namespace
+
+ColumnProjector::ColumnProjector(const CameraRig& rig, const ProjectionOptions& options) {
+  const PinholeCamera& camera = rig.reference;
+  lowest_.create(camera.height, camera.width);
+  highest_.create(camera.height, camera.width);
+  const auto rotation = rig.pose_on_robot.getRotationMatrix();
+  const double mount_z = rig.pose_on_robot.z();
+  for (int y = 0; y < camera.height; ++y) {
+    for (int x = 0; x < camera.width; ++x) {
+      // Height above the camera of the point (B/d)(x - cx, y - cy, f) is k / d.
+      const double k = rig.baseline_m * (rotation(2, 0) * (x - camera.cx) +
+                                         rotation(2, 1) * (y - camera.cy) +
+                                         rotation(2, 2) * camera.focal_px);
+      const DisparityInterval interval = bodyVolumeInterval(k, mount_z, options);
+      lowest_(y, x) = static_cast<float>(interval.lowest);
+      highest_(y, x) = static_cast<float>(interval.highest);
+    }
+  }
+}
+
+DisparityScan ColumnProjector::project(const cv::Mat1f& disparity) const {
+  if (disparity.size() != lowest_.size()) {
+    throw std::invalid_argument(
+        "ColumnProjector: disparity image is " + std::to_string(disparity.cols) + "x" +
+        std::to_string(disparity.rows) + ", the rig's camera is " + std::to_string(lowest_.cols) +
+        "x" + std::to_string(lowest_.rows));
+  }
+  const int width = disparity.cols;
+  DisparityScan scan;
+  // -1 is below every disparity, so the first pixel inside the volume always wins the max.
+  scan.column_disparity.assign(width, -1.0f);
+  scan.column_row.assign(width, -1);
+  float* best = scan.column_disparity.data();
+  int* best_row = scan.column_row.data();
+  for (int y = 0; y < disparity.rows; ++y) {
+    const float* row = disparity[y];
+    const float* lowest = lowest_[y];
+    const float* highest = highest_[y];
+    for (int x = 0; x < width; ++x) {
+      const float d = row[x];
+      const bool closer = (d >= lowest[x]) & (d <= highest[x]) & (d > best[x]);
+      best[x] = closer ? d : best[x];
+      best_row[x] = closer ? y : best_row[x];
+    }
+  }
+  for (int x = 0; x < width; ++x) {
+    if (best_row[x] < 0) best[x] = kInvalidDisparity;
+  }
+  return scan;
+}
+
+}  // namespace stereonav

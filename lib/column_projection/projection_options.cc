@@ -1,0 +1,22 @@
+#include "column_projection/projection_options.h"
+
+#include <string>
+
+namespace stereonav {
+
+ProjectionOptions loadProjectionOptions(IniSection& section) {
+  ProjectionOptions options;
+  options.floor_clearance_m = section.getDouble("floor_clearance_m", options.floor_clearance_m);
+  options.robot_height_m = section.getDouble("robot_height_m", options.robot_height_m);
+  options.scan_max_range_m = section.getDouble("scan_max_range_m", options.scan_max_range_m);
+  const auto fail = [&](const std::string& key, const std::string& why) {
+    throw ConfigError("[" + section.name() + "] " + key + ": " + why);
+  };
+  if (!(options.robot_height_m > options.floor_clearance_m)) {
+    fail("robot_height_m", "must be above floor_clearance_m");
+  }
+  if (!(options.scan_max_range_m > 0.0)) fail("scan_max_range_m", "must be positive");
+  return options;
+}
+
+}  // namespace stereonav

@@ -1,0 +1,82 @@
+#include "column_projection/column_projector.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
+
+#include "test_scenes.h"
+
+namespace stereonav {
+namespace {
+
+TEST(ColumnProjectorTest, WallAndBoxGiveTheirDisparitiesFloorAndShelfAreIgnored) {
+  const CameraRig rig = testRig(0, 0, 0, 0);
+  const DisparityScan scan = ColumnProjector(rig, bodyVolume(0.95)).project(levelCorridor());
+  ASSERT_EQ(scan.columns(), 201);
+  for (int x = 0; x < 201; ++x) {
+    const bool box = x >= 150 && x <= 160;
+    // Without the body volume the floor (up to d = 10) or the shelf (8) would win everywhere.
+    EXPECT_EQ(scan.column_disparity[x], box ? 8.0f : 5.0f) << "column " << x;
+    // The wall enters the body volume (0.95 m) at row 28: 0.5 + (50 - 28) * 0.02 = 0.94.
+    EXPECT_EQ(scan.column_row[x], box ? 40 : 28) << "column " << x;
+  }
+}
+
+TEST(ColumnProjectorTest, PointsAboveTheRobotAreIgnored) {
+  const CameraRig rig = testRig(0, 0, 0, 0);
+  cv::Mat1f disparity = levelCorridor();
+  disparity(cv::Rect(20, 10, 1, 91)).setTo(kInvalidDisparity);  // column 20 sees only the shelf
+  // The shelf's lowest row (9) is 0.5 + 41 * 0.0125 = 1.0125 m high.
+  EXPECT_FALSE(ColumnProjector(rig, bodyVolume(0.95)).project(disparity).valid(20));
+  // For a 1.06 m robot, shelf rows 6..9 (0.5 + 44 * 0.0125 = 1.05 m and lower) are obstacles.
+  const DisparityScan taller = ColumnProjector(rig, bodyVolume(1.06)).project(disparity);
+  EXPECT_EQ(taller.column_disparity[20], 8.0f);
+  EXPECT_EQ(taller.column_row[20], 6);
+}
+
+TEST(ColumnProjectorTest, TiltedCameraIgnoresTheFloorAndSeesTheBox) {
+  const CameraRig rig = testRig(0, 0, 0, 30);
+  const DisparityScan scan = ColumnProjector(rig, bodyVolume(1.0)).project(tiltedFloorWithBox());
+  // The closest box point along the optical axis is its top edge: Z = cos30 + (0.5 - 0.3) sin30
+  // = 0.9660 m, d = 10 / 0.9660 = 10.352 (the top pixel row sits a little below the edge).
+  EXPECT_NEAR(scan.column_disparity[100], 10.352f, 0.1f);
+  // The box is 0.4 m wide at about 1 m: columns 100 +- 20 at most. Elsewhere only floor.
+  for (int x = 0; x < 201; ++x) {
+    if (std::abs(x - 100) > 22) {
+      EXPECT_FALSE(scan.valid(x)) << "column " << x;
+    } else if (std::abs(x - 100) < 15) {
+      EXPECT_TRUE(scan.valid(x)) << "column " << x;
+    }
+  }
+}
+
+TEST(ColumnProjectorTest, DepthPerColumnIsFocalTimesBaselineOverDisparity) {
+  const CameraRig rig = testRig(0, 0, 0, 0);
+  cv::Mat1f disparity = levelCorridor();
+  disparity.col(20).setTo(kInvalidDisparity);
+  const std::vector<float> depths =
+      columnDepths(ColumnProjector(rig, bodyVolume(0.95)).project(disparity), rig);
+  EXPECT_FLOAT_EQ(depths[0], 2.0f);     // 100 * 0.1 / 5
+  EXPECT_FLOAT_EQ(depths[155], 1.25f);  // 100 * 0.1 / 8
+  EXPECT_EQ(depths[20], kInvalidDisparity);
+}
+
+TEST(ColumnProjectorTest, ZeroDisparityIsNoObstacle) {
+  // A level ray stays at the camera's height at any depth; at d = 0 it is infinitely far.
+  const CameraRig rig = testRig(0, 0, 0, 0);
+  cv::Mat1f disparity(101, 201, kInvalidDisparity);
+  disparity(50, 7) = 0.0f;
+  disparity(50, 8) = 0.5f;
+  const DisparityScan scan = ColumnProjector(rig, bodyVolume(1.0)).project(disparity);
+  EXPECT_FALSE(scan.valid(7));
+  EXPECT_EQ(scan.column_disparity[8], 0.5f);
+}
+
+TEST(ColumnProjectorTest, RejectsImageOfTheWrongSize) {
+  const ColumnProjector projector(testRig(0, 0, 0, 0), bodyVolume(1.0));
+  EXPECT_THROW(projector.project(cv::Mat1f(120, 160, 5.0f)), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace stereonav

@@ -1,0 +1,39 @@
+#include "column_projection/projection_options.h"
+
+#include <gtest/gtest.h>
+#include <mrpt/config/CConfigFileMemory.h>
+
+namespace stereonav {
+namespace {
+
+TEST(ProjectionOptionsTest, LoadsEveryKey) {
+  mrpt::config::CConfigFileMemory config(
+      "[projection]\nfloor_clearance_m = 0.1\nrobot_height_m = 1.4\nscan_max_range_m = 6\n");
+  IniSection section(config, "projection");
+  const ProjectionOptions options = loadProjectionOptions(section);
+  section.rejectUnknownKeys();
+  EXPECT_DOUBLE_EQ(options.floor_clearance_m, 0.1);
+  EXPECT_DOUBLE_EQ(options.robot_height_m, 1.4);
+  EXPECT_DOUBLE_EQ(options.scan_max_range_m, 6.0);
+}
+
+TEST(ProjectionOptionsTest, RobotMustBeTallerThanTheFloorClearance) {
+  mrpt::config::CConfigFileMemory config(
+      "[projection]\nfloor_clearance_m = 0.5\nrobot_height_m = 0.4\n");
+  IniSection section(config, "projection");
+  try {
+    loadProjectionOptions(section);
+    FAIL() << "expected ConfigError";
+  } catch (const ConfigError& error) {
+    EXPECT_STREQ(error.what(), "[projection] robot_height_m: must be above floor_clearance_m");
+  }
+}
+
+TEST(ProjectionOptionsTest, MaxRangeMustBePositive) {
+  mrpt::config::CConfigFileMemory config("[projection]\nscan_max_range_m = 0\n");
+  IniSection section(config, "projection");
+  EXPECT_THROW(loadProjectionOptions(section), ConfigError);
+}
+
+}  // namespace
+}  // namespace stereonav
