@@ -1,0 +1,105 @@
+#pragma once
+
+#include <mrpt/io/CFileGZInputStream.h>
+#include <mrpt/obs/CActionCollection.h>
+#include <mrpt/obs/CObservationImage.h>
+#include <mrpt/poses/CPose2D.h>
+#include <mrpt/serialization/CArchive.h>
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "observations/rig_frame.h"
+#include "observations/rig_observations.h"
+
+namespace stereonav {
+
+struct RawlogReaderOptions {
+  // The stereo pair to follow; "" follows the label of the first CObservationStereoImages found.
+  // Observations of other sensors are ignored.
+  std::string sensor_label;
+  // The rig the caller expects (e.g. from the [rig] ini section): frames with another image size
+  // or number of cameras are skipped, and when the rawlog does not name the pair's reference
+  // camera (rawlogs we did not write) its first secondary's side decides it. Without it the first
+  // frame read sets the expectation and an unnamed pair's reference is its left camera.
+  std::optional<CameraRig> expected_rig;
+};
+
+// Where a damaged rawlog stopped being readable.
+struct RawlogDamage {
+  size_t object_index = 0;   // of the first unreadable object, counting from 0
+  uint64_t byte_offset = 0;  // where that object starts, in the uncompressed stream
+  std::string error;         // what MRPT's deserializer said
+
+  std::string describe(const std::string& path) const;
+};
+
+// Stereo frames the reader could not use, by reason, for one summary at the end of a run.
+struct SkippedFrames {
+  std::array<size_t, 5> count{};             // indexed by RejectReason
+  std::array<std::string, 5> first_message;  // the first rejection of each reason, for the user
+
+  size_t total() const;
+  // E.g. "skipped 2 of the rawlog's stereo frames: 2 wrong image format (TRICLOPS left: image is
+  // 32x48, its camera is 64x48)"; "" if none was skipped.
+  std::string summary() const;
+};
+
+// Reads a rawlog (either layout, gzip-compressed or not, images embedded or external) one
+// RigFrame at a time, object by object, so a mapper can work on a long log frame by frame and so
+// that damage loses only what follows it.
+//
+// A frame is the extra cameras' CObservationImage (labelled <label>_CAM<k>, same timestamp)
+// followed by the pair's CObservationStereoImages, which completes it (rig_observations.h), with
+// the odometry pose recorded since the previous frame: the latest CObservationOdometry, or the
+// movement actions before the CSensoryFrame integrated from the odometry origin.
+//
+//   RawlogReader reader(path, options);
+//   while (auto frame = reader.next()) process(*frame);
+//   if (reader.damage()) warn(reader.damage()->describe(path));
+//   if (reader.skipped().total()) warn(reader.skipped().summary());
+class RawlogReader {
+ public:
+  // Throws std::runtime_error naming `path` if it cannot be opened.
+  RawlogReader(const std::string& path, RawlogReaderOptions options);
+
+  RawlogReader(const RawlogReader&) = delete;
+  RawlogReader& operator=(const RawlogReader&) = delete;
+
+  // The next usable frame, or nothing at the end of the rawlog or at the first unreadable object
+  // (see damage()). A truncated last object counts as damage.
+  std::optional<RigFrame> next();
+
+  const std::optional<RawlogDamage>& damage() const { return damage_; }
+  const SkippedFrames& skipped() const { return skipped_; }
+  const std::string& imagesDirectory() const { return images_directory_; }
+
+ private:
+  // Returns the frame completed by `pair`, if it is ours and usable.
+  std::optional<RigFrame> handleObject(const mrpt::serialization::CSerializable::Ptr& object);
+  void collect(const mrpt::obs::CObservation::Ptr& observation);
+  void integrateMovement(const mrpt::obs::CActionCollection& actions);
+  // The frame completed by `pair`, if it is ours and usable.
+  std::optional<RigFrame> completeFrame(const mrpt::obs::CObservationStereoImages& pair);
+  void skip(const ObservationRejected& rejection);
+
+  std::string path_;
+  std::string images_directory_;
+  RawlogReaderOptions options_;
+  mrpt::io::CFileGZInputStream stream_;
+  mrpt::serialization::CArchiveStreamBase<mrpt::io::CFileGZInputStream> archive_;
+  size_t object_index_ = 0;
+  bool finished_ = false;
+  std::optional<RawlogDamage> damage_;
+  SkippedFrames skipped_;
+
+  // What has arrived since the last frame.
+  std::vector<mrpt::obs::CObservationImage::Ptr> pending_images_;
+  std::optional<mrpt::poses::CPose2D> pending_odometry_;
+  mrpt::poses::CPose2D integrated_movement_;  // sum of CActionRobotMovement2D so far
+};
+
+}  // namespace stereonav
