@@ -36,11 +36,11 @@ int32_t SurfaceSegmentation::join(int32_t label, int32_t neighbour_label) {
 // row above mostly holds one label too, so remembering the last label already joined skips almost
 // every union-find call; and pixels are counted per run, not with a store per pixel.
 struct SurfaceSegmentation::RowScan {
-  int32_t* labels;
-  int32_t label = 0;        // label of the current run, 0 = no run (last pixel invalid)
-  int32_t last_joined = 0;  // a label of the row above already joined with `label`
-  int32_t pending = 0;      // pixels of the current run not yet added to region_size_
-  int32_t next_label;
+  int32_t* labels = nullptr;  // this row's labels
+  int32_t label = 0;          // the current run's label; 0 while the pixel has none yet
+  int32_t last_joined = 0;    // a label of the row above already joined with `label`
+  int32_t pending = 0;        // pixels of the current run not yet added to region_size_
+  int32_t next_label = 1;
 };
 
 template <bool kEightConnected, bool kHasLeft, bool kHasUp, bool kHasUpRight>
@@ -88,7 +88,6 @@ template <bool kEightConnected>
 int32_t SurfaceSegmentation::labelSurfaces(const cv::Mat1f& disparity) {
   const int width = disparity.cols;
   RowScan scan;
-  scan.next_label = 1;
   region_size_[0] = 0;  // collects the (ignored) count of "no run"
   for (int y = 0; y < disparity.rows; ++y) {
     const float* row = disparity[y];
@@ -124,7 +123,7 @@ void SurfaceSegmentation::classifyLabels(int32_t label_count) {
   }
   reject_label_[0] = 0;
   for (int32_t label = 1; label < label_count; ++label) {
-    reject_label_[label] = region_size_[parent_[label]] < options_.min_region_pixels;
+    reject_label_[label] = region_size_[parent_[label]] < options_.min_region_pixels ? 255 : 0;
   }
 }
 
@@ -150,9 +149,10 @@ void SurfaceSegmentation::apply(cv::Mat1f& disparity, cv::Mat1b& rejected) {
     uint8_t* mask = rejected[y];
     const int32_t* labels = labels_.data() + static_cast<size_t>(y) * width;
     for (int x = 0; x < width; ++x) {
+      // Written without branches: which pixels go is as unpredictable as the spikes.
       const uint8_t reject = reject_label_[labels[x]];
-      if (reject) row[x] = kInvalidDisparity;
-      mask[x] = reject ? 255 : 0;
+      row[x] = reject ? kInvalidDisparity : row[x];
+      mask[x] = reject;
     }
   }
 }

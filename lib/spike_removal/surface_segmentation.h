@@ -44,7 +44,7 @@ class SurfaceSegmentation {
   std::vector<int32_t> labels_;  // per pixel, row-major; 0 = invalid pixel
   std::vector<int32_t> parent_;  // union-find forest over labels; parent_[l] <= l
   std::vector<int32_t> region_size_;
-  std::vector<uint8_t> reject_label_;
+  std::vector<uint8_t> reject_label_;  // 255 = the label's surface is too small, else 0
 };
 
 }  // namespace stereonav
