@@ -1,0 +1,55 @@
+#include "disparity/disparity_evaluation.h"
+
+#include <opencv2/imgcodecs.hpp>
+
+#include <cmath>
+#include <stdexcept>
+
+#include "disparity/disparity_image.h"
+
+namespace stereonav {
+
+cv::Mat1f loadMiddleburyGroundTruth(const std::string& path, double scale) {
+  if (!(scale > 0)) throw std::invalid_argument(path + ": ground-truth scale must be positive");
+  cv::Mat raw = cv::imread(path, cv::IMREAD_ANYDEPTH | cv::IMREAD_GRAYSCALE);
+  if (raw.empty()) throw std::runtime_error(path + ": cannot read ground-truth image");
+  if (raw.depth() != CV_8U && raw.depth() != CV_16U) {
+    throw std::runtime_error(path + ": ground truth must be an 8- or 16-bit grey image");
+  }
+  cv::Mat1f ground_truth;
+  raw.convertTo(ground_truth, CV_32F, 1.0 / scale);
+  ground_truth.setTo(kInvalidDisparity, raw == 0);
+  return ground_truth;
+}
+
+DisparityEvaluation evaluateDisparity(const cv::Mat1f& disparity, const cv::Mat1f& ground_truth, int border) {
+  if (disparity.size() != ground_truth.size()) {
+    throw std::invalid_argument("evaluation: disparity and ground truth differ in size");
+  }
+  DisparityEvaluation result;
+  int bad_1 = 0, bad_2 = 0;
+  double abs_error_sum = 0.0;
+  for (int y = border; y < disparity.rows - border; ++y) {
+    for (int x = border; x < disparity.cols - border; ++x) {
+      const float truth = ground_truth(y, x);
+      if (!isValidDisparity(truth)) continue;
+      ++result.known_pixels;
+      const float d = disparity(y, x);
+      if (!isValidDisparity(d)) continue;
+      ++result.valid_pixels;
+      const double error = std::abs(static_cast<double>(d) - truth);
+      abs_error_sum += error;
+      bad_1 += error > 1.0;
+      bad_2 += error > 2.0;
+    }
+  }
+  if (result.known_pixels > 0) result.density = static_cast<double>(result.valid_pixels) / result.known_pixels;
+  if (result.valid_pixels > 0) {
+    result.bad_1 = static_cast<double>(bad_1) / result.valid_pixels;
+    result.bad_2 = static_cast<double>(bad_2) / result.valid_pixels;
+    result.mean_abs_error = abs_error_sum / result.valid_pixels;
+  }
+  return result;
+}
+
+}  // namespace stereonav

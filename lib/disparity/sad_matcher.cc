@@ -1,0 +1,457 @@
+#include "disparity/sad_matcher.h"
+
+#include <opencv2/core/hal/intrin.hpp>
+#include <opencv2/core/utility.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "disparity/disparity_image.h"
+#include "disparity/prefilter.h"
+
+// The engine follows cv::StereoBM's structure: per image row, column sums over the window rows
+// are kept for every (x, d) and updated by adding the entering row's absolute differences and
+// subtracting the leaving row's (kept in a ring buffer, so nothing is recomputed); a horizontal
+// running sum over x then gives the window score of all candidates of a pixel at once, and the
+// winner-takes-all search and the sum of all scores (for the uniqueness test) happen in the
+// same pass. Candidates are laid out so that the disparities of one pixel are contiguous bytes,
+// which makes every step a vector operation across disparities (OpenCV universal intrinsics).
+// Several cameras are combined by summing their absolute differences before the box filter: the
+// sum of the cameras' SADs is the SAD of the summed differences (paper section 2.2).
+
+namespace stereonav {
+namespace {
+
+constexpr int kByteLanes = 16;  // candidates compared per 8-bit vector
+constexpr size_t kMaxCameras = 16;
+
+int roundUp(int value, int multiple) { return (value + multiple - 1) / multiple * multiple; }
+
+// Weights of one bilinear sample of a tabulated camera; they add up to 1 << 16.
+struct BilinearTap {
+  int dx = 0, dy = 0;  // integer part of the sample's offset from the reference pixel
+  int w00 = 0, w01 = 0, w10 = 0, w11 = 0;
+};
+
+// Where the candidates of a reference pixel are. Candidate j (disparity min + j) of pixel (x, y)
+// is the byte buffer.data + origin + x*x_step + y*y_step + j for cameras one unit baseline along
+// an image axis: their image is flipped and/or transposed once per frame so that increasing
+// disparity runs forward in memory. Other cameras (fractional, longer or diagonal baselines) are
+// interpolated into a per-row table; for them origin/x_step/y_step address pixel (x, y) itself.
+struct CandidateSource {
+  cv::Mat1b buffer;  // padded by the frame's margin
+  ptrdiff_t origin = 0;
+  ptrdiff_t x_step = 0;
+  ptrdiff_t y_step = 0;
+  std::vector<BilinearTap> taps;  // one per candidate; empty for direct sources
+
+  bool tabulated() const { return !taps.empty(); }
+};
+
+struct PreparedFrame {
+  cv::Mat1b reference;  // prefiltered, padded by margin
+  std::vector<CandidateSource> sources;
+  int margin = 0;
+  int radius = 0;
+  int min_disparity = 0;
+  int disparities = 0;         // D
+  int padded_disparities = 0;  // D rounded up to whole byte vectors
+  bool best_half = false;
+  bool subpixel = false;
+};
+
+// A rectangle of reference pixels whose candidates, at every disparity, are inside the images of
+// exactly `cameras`.
+struct MatchRegion {
+  int x0 = 0, x1 = 0, y0 = 0, y1 = 0;
+  std::vector<int> cameras;
+};
+
+CandidateSource makeCandidateSource(const cv::Mat1b& image, const SecondaryCamera& camera,
+                                    const PreparedFrame& frame) {
+  const int width = image.cols, height = image.rows, margin = frame.margin;
+  const bool horizontal_unit = camera.by == 0.0 && std::abs(camera.bx) == 1.0;
+  const bool vertical_unit = camera.bx == 0.0 && std::abs(camera.by) == 1.0;
+  cv::Mat1b arranged = image;
+  if (vertical_unit) cv::transpose(image, arranged);
+  if ((horizontal_unit && camera.bx > 0) || (vertical_unit && camera.by > 0)) {
+    cv::Mat1b flipped;
+    cv::flip(arranged, flipped, 1);
+    arranged = flipped;
+  }
+  CandidateSource source;
+  cv::copyMakeBorder(arranged, source.buffer, margin, margin, margin, margin, cv::BORDER_REPLICATE);
+  const ptrdiff_t step = static_cast<ptrdiff_t>(source.buffer.step);
+  const ptrdiff_t corner = margin * step + margin;  // pixel (0, 0) of `arranged`
+  const int min_d = frame.min_disparity;
+  if (horizontal_unit && camera.bx < 0) {  // (x + d, y)
+    source.origin = corner + min_d;
+    source.x_step = 1;
+    source.y_step = step;
+  } else if (horizontal_unit) {  // (x - d, y) = flipped (width-1-x+d, y)
+    source.origin = corner + width - 1 + min_d;
+    source.x_step = -1;
+    source.y_step = step;
+  } else if (vertical_unit && camera.by < 0) {  // (x, y + d) = transposed row x, column y + d
+    source.origin = corner + min_d;
+    source.x_step = step;
+    source.y_step = 1;
+  } else if (vertical_unit) {  // (x, y - d) = transposed and flipped row x, column height-1-y+d
+    source.origin = corner + height - 1 + min_d;
+    source.x_step = step;
+    source.y_step = -1;
+  } else {
+    source.origin = corner;
+    source.x_step = 1;
+    source.y_step = step;
+    for (int j = 0; j < frame.padded_disparities; ++j) {
+      // Padding lanes repeat the last disparity so that their samples stay inside the image.
+      const int d = min_d + std::min(j, frame.disparities - 1);
+      const auto split = [](double offset, int& whole, int& weight) {
+        whole = static_cast<int>(std::floor(offset));
+        weight = static_cast<int>(std::lround((offset - whole) * 256.0));
+        if (weight == 256) {
+          ++whole;
+          weight = 0;
+        }
+      };
+      BilinearTap tap;
+      int wx = 0, wy = 0;
+      split(-camera.bx * d, tap.dx, wx);
+      split(-camera.by * d, tap.dy, wy);
+      tap.w00 = (256 - wx) * (256 - wy);
+      tap.w01 = wx * (256 - wy);
+      tap.w10 = (256 - wx) * wy;
+      tap.w11 = wx * wy;
+      source.taps.push_back(tap);
+    }
+  }
+  return source;
+}
+
+// Reference rows or columns [lo, hi] whose candidates at every disparity lie inside the image
+// for a camera offset b along this axis (the sample is at coordinate - b*d).
+void visibleRange(double b, int min_d, int max_d, int size, int& lo, int& hi) {
+  const double near_shift = b * min_d, far_shift = b * max_d;
+  lo = std::max(0, static_cast<int>(std::ceil(std::max(near_shift, far_shift))));
+  hi = std::min(size - 1, size - 1 + static_cast<int>(std::floor(std::min(near_shift, far_shift))));
+}
+
+std::vector<MatchRegion> matchRegions(const StereoFrame& frame, int min_d, int max_d) {
+  const int width = frame.reference.cols, height = frame.reference.rows;
+  const size_t cameras = frame.secondaries.size();
+  std::vector<int> x_lo(cameras), x_hi(cameras), y_lo(cameras), y_hi(cameras);
+  std::vector<int> x_cuts{0, width}, y_cuts{0, height};
+  for (size_t c = 0; c < cameras; ++c) {
+    const SecondaryCamera& camera = frame.secondaries[c].camera;
+    visibleRange(camera.bx, min_d, max_d, width, x_lo[c], x_hi[c]);
+    visibleRange(camera.by, min_d, max_d, height, y_lo[c], y_hi[c]);
+    x_cuts.insert(x_cuts.end(), {std::clamp(x_lo[c], 0, width), std::clamp(x_hi[c] + 1, 0, width)});
+    y_cuts.insert(y_cuts.end(), {std::clamp(y_lo[c], 0, height), std::clamp(y_hi[c] + 1, 0, height)});
+  }
+  for (auto* cuts : {&x_cuts, &y_cuts}) {
+    std::sort(cuts->begin(), cuts->end());
+    cuts->erase(std::unique(cuts->begin(), cuts->end()), cuts->end());
+  }
+  std::vector<MatchRegion> regions;
+  for (size_t i = 0; i + 1 < y_cuts.size(); ++i) {
+    for (size_t k = 0; k + 1 < x_cuts.size(); ++k) {
+      MatchRegion cell{x_cuts[k], x_cuts[k + 1], y_cuts[i], y_cuts[i + 1], {}};
+      for (size_t c = 0; c < cameras; ++c) {
+        if (x_lo[c] <= cell.x0 && x_hi[c] >= cell.x1 - 1 && y_lo[c] <= cell.y0 && y_hi[c] >= cell.y1 - 1) {
+          cell.cameras.push_back(static_cast<int>(c));
+        }
+      }
+      if (cell.cameras.empty()) continue;
+      MatchRegion* left = regions.empty() ? nullptr : &regions.back();
+      if (left && left->y0 == cell.y0 && left->x1 == cell.x0 && left->cameras == cell.cameras) {
+        left->x1 = cell.x1;
+      } else {
+        regions.push_back(cell);
+      }
+    }
+  }
+  return regions;
+}
+
+// The vector type that accumulates scores: 16-bit when the largest possible window score fits,
+// 32-bit otherwise.
+template <typename Acc>
+struct AccumulatorLanes;
+
+template <>
+struct AccumulatorLanes<uint16_t> {
+  using Vec = cv::v_uint16x8;
+  static constexpr int kCount = 8;
+  static void widen(const cv::v_uint8x16& bytes, Vec* out) { cv::v_expand(bytes, out[0], out[1]); }
+  static cv::v_uint32x4 widenSum(const Vec& v) {
+    cv::v_uint32x4 low, high;
+    cv::v_expand(v, low, high);
+    return low + high;
+  }
+  static Vec all(unsigned value) { return cv::v_setall_u16(static_cast<ushort>(value)); }
+  // OpenCV's 16-bit + and - saturate; running sums need modular arithmetic, which is exact as
+  // long as the true result fits.
+  static Vec slide(const Vec& sum, const Vec& entering, const Vec& leaving) {
+    return cv::v_sub_wrap(cv::v_add_wrap(sum, entering), leaving);
+  }
+};
+
+template <>
+struct AccumulatorLanes<uint32_t> {
+  using Vec = cv::v_uint32x4;
+  static constexpr int kCount = 4;
+  static void widen(const cv::v_uint8x16& bytes, Vec* out) {
+    cv::v_uint16x8 low, high;
+    cv::v_expand(bytes, low, high);
+    cv::v_expand(low, out[0], out[1]);
+    cv::v_expand(high, out[2], out[3]);
+  }
+  static cv::v_uint32x4 widenSum(const Vec& v) { return v; }
+  static Vec all(unsigned value) { return cv::v_setall_u32(value); }
+  static Vec slide(const Vec& sum, const Vec& entering, const Vec& leaving) { return sum + entering - leaving; }
+};
+
+template <typename Acc>
+void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch& out) {
+  using Lanes = AccumulatorLanes<Acc>;
+  using Vec = typename Lanes::Vec;
+  constexpr int kVectorsPerBytes = kByteLanes / Lanes::kCount;
+  constexpr Acc kMaxScore = std::numeric_limits<Acc>::max();
+
+  const int r = frame.radius, window = 2 * r + 1, margin = frame.margin;
+  const int disparities = frame.disparities, padded = frame.padded_disparities;
+  const int x0 = region.x0, nx = region.x1 - region.x0 + 2 * r;
+  const size_t row_size = static_cast<size_t>(nx) * padded;
+  const int cameras = static_cast<int>(region.cameras.size());
+  // Sum mode: one group of all cameras. Best-half: each camera its own group, and the
+  // ceil(N/2) lowest group scores are added per candidate.
+  const int groups = frame.best_half && cameras > 1 ? cameras : 1;
+  const int kept = groups == 1 ? 1 : (cameras + 1) / 2;
+
+  std::vector<Acc> ring(static_cast<size_t>(groups) * window * row_size, 0);
+  std::vector<Acc> column_sums(static_cast<size_t>(groups) * row_size, 0);
+  std::vector<Acc> scores(static_cast<size_t>(groups) * padded, 0);
+  std::vector<Acc> combined(padded, 0);
+  std::vector<uchar> tables(static_cast<size_t>(cameras) * row_size);
+
+  const int chunks = padded / Lanes::kCount;
+  const int whole_chunks = disparities / Lanes::kCount;  // chunks without padding lanes
+  std::vector<Vec> chunk_index(chunks), padding(chunks);
+  for (int chunk = 0; chunk < chunks; ++chunk) {
+    Acc index[Lanes::kCount], pad[Lanes::kCount];
+    for (int lane = 0; lane < Lanes::kCount; ++lane) {
+      index[lane] = static_cast<Acc>(chunk * Lanes::kCount + lane);
+      pad[lane] = chunk * Lanes::kCount + lane < disparities ? 0 : kMaxScore;
+    }
+    chunk_index[chunk] = cv::v_load(index);
+    padding[chunk] = cv::v_load(pad);
+  }
+
+  std::vector<const uchar*> candidates(cameras);
+  std::vector<ptrdiff_t> candidate_x_step(cameras);
+
+  // Absolute differences of reference row yy against every candidate, into the ring slot of
+  // row yy, updating the column sums by (entering row - leaving row).
+  const auto enterRow = [&](int yy) {
+    const int slot = (yy - (region.y0 - r)) % window;
+    const uchar* reference_row = frame.reference.ptr<uchar>(yy + margin) + margin;
+    for (int c = 0; c < cameras; ++c) {
+      const CandidateSource& source = frame.sources[region.cameras[c]];
+      const uchar* pixel_row = source.buffer.data + source.origin + yy * source.y_step;
+      if (!source.tabulated()) {
+        candidates[c] = pixel_row;
+        candidate_x_step[c] = source.x_step;
+        continue;
+      }
+      uchar* table = tables.data() + c * row_size;
+      const ptrdiff_t step = static_cast<ptrdiff_t>(source.buffer.step);
+      for (int xe = 0; xe < nx; ++xe) {
+        const uchar* pixel = pixel_row + (x0 - r + xe);
+        uchar* entry = table + static_cast<size_t>(xe) * padded;
+        for (int j = 0; j < padded; ++j) {
+          const BilinearTap& tap = source.taps[j];
+          const uchar* q = pixel + tap.dy * step + tap.dx;
+          entry[j] = static_cast<uchar>(
+              (tap.w00 * q[0] + tap.w01 * q[1] + tap.w10 * q[step] + tap.w11 * q[step + 1] + (1 << 15)) >> 16);
+        }
+      }
+      candidates[c] = table - static_cast<ptrdiff_t>(x0 - r) * padded;
+      candidate_x_step[c] = padded;
+    }
+    for (int g = 0; g < groups; ++g) {
+      const int first = groups == 1 ? 0 : g, last = groups == 1 ? cameras : g + 1;
+      Acc* ring_row = ring.data() + (static_cast<size_t>(g) * window + slot) * row_size;
+      Acc* sums = column_sums.data() + g * row_size;
+      for (int xe = 0; xe < nx; ++xe) {
+        const int x = x0 - r + xe;
+        const cv::v_uint8x16 reference = cv::v_setall_u8(reference_row[x]);
+        for (int b = 0; b < padded; b += kByteLanes) {
+          Vec entering[kVectorsPerBytes];
+          Lanes::widen(cv::v_absdiff(reference, cv::v_load(candidates[first] + x * candidate_x_step[first] + b)),
+                       entering);
+          for (int c = first + 1; c < last; ++c) {
+            Vec more[kVectorsPerBytes];
+            Lanes::widen(cv::v_absdiff(reference, cv::v_load(candidates[c] + x * candidate_x_step[c] + b)), more);
+            for (int i = 0; i < kVectorsPerBytes; ++i) entering[i] += more[i];
+          }
+          Acc* slot_entry = ring_row + static_cast<size_t>(xe) * padded + b;
+          Acc* sum_entry = sums + static_cast<size_t>(xe) * padded + b;
+          for (int i = 0; i < kVectorsPerBytes; ++i) {
+            const Vec leaving = cv::v_load(slot_entry + i * Lanes::kCount);
+            cv::v_store(slot_entry + i * Lanes::kCount, entering[i]);
+            cv::v_store(sum_entry + i * Lanes::kCount,
+                        Lanes::slide(cv::v_load(sum_entry + i * Lanes::kCount), entering[i], leaving));
+          }
+        }
+      }
+    }
+  };
+
+  // Horizontal running sum of the column sums, winner-takes-all and sum of scores for row y.
+  const auto matchRow = [&](int y) {
+    for (int g = 0; g < groups; ++g) {
+      const Acc* sums = column_sums.data() + g * row_size;
+      for (int b = 0; b < padded; b += Lanes::kCount) {
+        Vec total = Lanes::all(0);
+        for (int xe = 0; xe < window; ++xe) total += cv::v_load(sums + static_cast<size_t>(xe) * padded + b);
+        cv::v_store(scores.data() + g * padded + b, total);
+      }
+    }
+    float* disparity_row = out.disparity.ptr<float>(y);
+    int* best_row = out.best_score.ptr<int>(y);
+    int* sum_row = out.score_sum.ptr<int>(y);
+    Vec sorted[kMaxCameras];
+    for (int x = region.x0; x < region.x1; ++x) {
+      const int xe = x - x0;
+      const bool slide = x > region.x0;
+      Vec best = Lanes::all(kMaxScore), best_index = Lanes::all(0);
+      cv::v_uint32x4 score_sum = cv::v_setall_u32(0);
+      for (int chunk = 0; chunk < chunks; ++chunk) {
+        const int b = chunk * Lanes::kCount;
+        Vec score;
+        for (int g = 0; g < groups; ++g) {
+          Acc* group_score = scores.data() + g * padded + b;
+          Vec value = cv::v_load(group_score);
+          if (slide) {
+            const Acc* sums = column_sums.data() + g * row_size;
+            value = Lanes::slide(value, cv::v_load(sums + static_cast<size_t>(xe + 2 * r) * padded + b),
+                                 cv::v_load(sums + static_cast<size_t>(xe - 1) * padded + b));
+            cv::v_store(group_score, value);
+          }
+          if (groups == 1) {
+            score = value;
+            continue;
+          }
+          // Insert into the `kept` lowest so far (a min/max insertion network).
+          for (int k = 0; k < std::min(g, kept); ++k) {
+            const Vec low = cv::v_min(sorted[k], value);
+            value = cv::v_max(sorted[k], value);
+            sorted[k] = low;
+          }
+          if (g < kept) sorted[g] = value;
+        }
+        if (groups > 1) {
+          score = sorted[0];
+          for (int k = 1; k < kept; ++k) score += sorted[k];
+          cv::v_store(combined.data() + b, score);
+        }
+        if (chunk >= whole_chunks) {
+          score_sum += Lanes::widenSum(score & ~padding[chunk]);
+          score = score | padding[chunk];
+        } else {
+          score_sum += Lanes::widenSum(score);
+        }
+        const Vec better = score < best;
+        best = cv::v_min(best, score);
+        best_index = cv::v_select(better, chunk_index[chunk], best_index);
+      }
+      const Acc best_score = static_cast<Acc>(cv::v_reduce_min(best));
+      const int j = static_cast<int>(
+          cv::v_reduce_min(cv::v_select(best == Lanes::all(best_score), best_index, Lanes::all(kMaxScore))));
+      float disparity = static_cast<float>(frame.min_disparity + j);
+      if (frame.subpixel && j > 0 && j < disparities - 1) {
+        const Acc* curve = groups == 1 ? scores.data() : combined.data();
+        const double before = curve[j - 1], after = curve[j + 1];
+        const double curvature = before + after - 2.0 * best_score;
+        if (curvature > 0) disparity += static_cast<float>(0.5 * (before - after) / curvature);
+      }
+      disparity_row[x] = disparity;
+      best_row[x] = static_cast<int>(best_score);
+      sum_row[x] = static_cast<int>(cv::v_reduce_sum(score_sum));
+    }
+  };
+
+  for (int yy = region.y0 - r; yy < region.y0 + r; ++yy) enterRow(yy);
+  for (int y = region.y0; y < region.y1; ++y) {
+    enterRow(y + r);
+    matchRow(y);
+  }
+}
+
+}  // namespace
+
+SadMatch matchSad(const StereoFrame& frame, const StereoOptions& options) {
+  checkStereoFrame(frame);
+  validateStereoOptions(options);
+  if (frame.secondaries.size() > kMaxCameras) {
+    throw std::invalid_argument("stereo frame: at most " + std::to_string(kMaxCameras) + " secondary views");
+  }
+  const int width = frame.reference.cols, height = frame.reference.rows;
+  PreparedFrame prepared;
+  prepared.radius = options.window / 2;
+  prepared.min_disparity = options.min_disparity;
+  prepared.disparities = options.disparityCount();
+  prepared.padded_disparities = roundUp(prepared.disparities, kByteLanes);
+  prepared.margin = prepared.radius + prepared.padded_disparities + 2;
+  prepared.best_half = options.combination == CameraCombination::kBestHalf;
+  prepared.subpixel = options.subpixel;
+  const auto prefilter = [&](const cv::Mat1b& image) {
+    return prefilterImage(image, options.prefilter, options.prefilter_cap, options.texture_sigma);
+  };
+  cv::copyMakeBorder(prefilter(frame.reference), prepared.reference, prepared.margin, prepared.margin,
+                     prepared.margin, prepared.margin, cv::BORDER_REPLICATE);
+  for (const SecondaryView& view : frame.secondaries) {
+    prepared.sources.push_back(makeCandidateSource(prefilter(view.image), view.camera, prepared));
+  }
+
+  SadMatch match;
+  match.disparity.create(height, width);
+  match.disparity.setTo(kInvalidDisparity);
+  match.best_score = cv::Mat1i::zeros(height, width);
+  match.score_sum = cv::Mat1i::zeros(height, width);
+
+  const std::vector<MatchRegion> regions = matchRegions(frame, options.min_disparity, options.max_disparity);
+  const long long largest_score = static_cast<long long>(options.window) * options.window *
+                                  maxPrefilteredDifference(options.prefilter, options.prefilter_cap) *
+                                  static_cast<long long>(frame.secondaries.size());
+  const bool narrow = largest_score <= std::numeric_limits<uint16_t>::max();
+  const int stripes = std::min(options.threads, height);
+  const auto matchStripes = [&](const cv::Range& range) {
+    for (int stripe = range.start; stripe < range.end; ++stripe) {
+      const int top = height * stripe / stripes, bottom = height * (stripe + 1) / stripes;
+      for (MatchRegion region : regions) {
+        region.y0 = std::max(region.y0, top);
+        region.y1 = std::min(region.y1, bottom);
+        if (region.y0 >= region.y1) continue;
+        if (narrow) {
+          matchRegion<uint16_t>(prepared, region, match);
+        } else {
+          matchRegion<uint32_t>(prepared, region, match);
+        }
+      }
+    }
+  };
+  if (stripes == 1) {
+    matchStripes(cv::Range(0, 1));
+  } else {
+    cv::parallel_for_(cv::Range(0, stripes), matchStripes, stripes);
+  }
+  return match;
+}
+
+}  // namespace stereonav

@@ -1,0 +1,97 @@
+#include "disparity/stereo_options.h"
+
+#include <map>
+
+namespace stereonav {
+namespace {
+
+template <typename Enum>
+Enum parseEnum(const std::string& text, const std::map<std::string, Enum>& names,
+               const std::string& what) {
+  const auto found = names.find(text);
+  if (found != names.end()) return found->second;
+  std::string expected;
+  for (const auto& [name, value] : names) expected += (expected.empty() ? "" : " | ") + name;
+  throw ConfigError(what + ": expected " + expected + ", got '" + text + "'");
+}
+
+const std::map<std::string, StereoBackend> kBackendNames{
+    {"sad", StereoBackend::kSad}, {"bm", StereoBackend::kOpenCvBm}, {"sgbm", StereoBackend::kOpenCvSgbm}};
+const std::map<std::string, Prefilter> kPrefilterNames{
+    {"none", Prefilter::kNone}, {"xsobel", Prefilter::kXSobel}, {"log", Prefilter::kLog}};
+const std::map<std::string, CameraCombination> kCombinationNames{
+    {"sum", CameraCombination::kSum}, {"best_half", CameraCombination::kBestHalf}};
+
+template <typename Enum>
+std::string nameOf(Enum value, const std::map<std::string, Enum>& names) {
+  for (const auto& [name, candidate] : names) {
+    if (candidate == value) return name;
+  }
+  return "";
+}
+
+}  // namespace
+
+StereoBackend parseStereoBackend(const std::string& text, const std::string& what) {
+  return parseEnum(text, kBackendNames, what);
+}
+
+const char* toString(StereoBackend backend) {
+  switch (backend) {
+    case StereoBackend::kSad: return "sad";
+    case StereoBackend::kOpenCvBm: return "bm";
+    case StereoBackend::kOpenCvSgbm: return "sgbm";
+  }
+  return "";
+}
+
+StereoOptions loadStereoOptions(IniSection& section) {
+  StereoOptions options;
+  const std::string prefix = "[" + section.name() + "] ";
+  options.backend = parseStereoBackend(section.getString("backend", toString(options.backend)),
+                                       prefix + "backend");
+  options.min_disparity = section.getInt("min_disparity", options.min_disparity);
+  options.max_disparity = section.getInt("max_disparity", options.max_disparity);
+  options.window = section.getInt("window", options.window);
+  options.prefilter = parseEnum(section.getString("prefilter", nameOf(options.prefilter, kPrefilterNames)),
+                                kPrefilterNames, prefix + "prefilter");
+  options.prefilter_cap = section.getInt("prefilter_cap", options.prefilter_cap);
+  options.combination =
+      parseEnum(section.getString("combination", nameOf(options.combination, kCombinationNames)),
+                kCombinationNames, prefix + "combination");
+  options.texture_threshold = section.getDouble("texture_threshold", options.texture_threshold);
+  options.texture_sigma = section.getDouble("texture_sigma", options.texture_sigma);
+  options.uniqueness_threshold = section.getDouble("uniqueness_threshold", options.uniqueness_threshold);
+  options.left_right_check = section.getBool("left_right_check", options.left_right_check);
+  options.left_right_max_diff = section.getDouble("left_right_max_diff", options.left_right_max_diff);
+  options.subpixel = section.getBool("subpixel", options.subpixel);
+  options.threads = section.getInt("threads", options.threads);
+  options.opencv_texture_threshold =
+      section.getInt("opencv_texture_threshold", options.opencv_texture_threshold);
+  options.opencv_uniqueness_ratio = section.getInt("opencv_uniqueness_ratio", options.opencv_uniqueness_ratio);
+  options.opencv_speckle_window = section.getInt("opencv_speckle_window", options.opencv_speckle_window);
+  options.opencv_speckle_range = section.getInt("opencv_speckle_range", options.opencv_speckle_range);
+  validateStereoOptions(options, section.name());
+  return options;
+}
+
+void validateStereoOptions(const StereoOptions& options, const std::string& section) {
+  const auto fail = [&](const std::string& key, const std::string& why) {
+    throw ConfigError("[" + section + "] " + key + ": " + why);
+  };
+  if (options.min_disparity < 0) fail("min_disparity", "must be >= 0");
+  if (options.max_disparity <= options.min_disparity) fail("max_disparity", "must exceed min_disparity");
+  if (options.window < 3 || options.window % 2 == 0) fail("window", "must be odd and >= 3");
+  if (options.prefilter_cap < 1 || options.prefilter_cap > 127) fail("prefilter_cap", "must be in 1..127");
+  if (options.texture_threshold < 0) fail("texture_threshold", "must be >= 0");
+  if (options.texture_sigma <= 0) fail("texture_sigma", "must be positive");
+  if (options.uniqueness_threshold <= 0) fail("uniqueness_threshold", "must be positive");
+  if (options.left_right_max_diff < 0) fail("left_right_max_diff", "must be >= 0");
+  if (options.threads < 1) fail("threads", "must be >= 1");
+  if (options.opencv_texture_threshold < 0) fail("opencv_texture_threshold", "must be >= 0");
+  if (options.opencv_uniqueness_ratio < 0) fail("opencv_uniqueness_ratio", "must be >= 0");
+  if (options.opencv_speckle_window < 0) fail("opencv_speckle_window", "must be >= 0");
+  if (options.opencv_speckle_range < 0) fail("opencv_speckle_range", "must be >= 0");
+}
+
+}  // namespace stereonav

@@ -1,0 +1,74 @@
+#pragma once
+
+#include <string>
+
+#include "common/ini_section.h"
+
+namespace stereonav {
+
+// Which matcher computes the disparity image. kSad is this library's multi-baseline SAD engine
+// (paper section 2.2); the OpenCV backends are binocular-only references for comparison.
+enum class StereoBackend { kSad, kOpenCvBm, kOpenCvSgbm };
+
+// Image transform applied to every view before matching. kXSobel is the horizontal Sobel
+// derivative clipped to +-prefilter_cap, as cv::StereoBM's PREFILTER_XSOBEL; kLog is the
+// Laplacian of Gaussian clipped the same way. Both remove the brightness offsets between cameras
+// that raw SAD is sensitive to.
+enum class Prefilter { kNone, kXSobel, kLog };
+
+// How the window scores of several secondary cameras make one score per candidate disparity.
+// kSum is the paper's (section 2.2, after Okutomi and Kanade). kBestHalf keeps only the
+// ceil(N/2) lowest camera scores, so a point hidden from some cameras by an occluding edge is
+// still matched by the cameras that see it.
+enum class CameraCombination { kSum, kBestHalf };
+
+// Everything that controls the stereo engine; loaded from the [stereo] ini section.
+struct StereoOptions {
+  StereoBackend backend = StereoBackend::kSad;
+  int min_disparity = 0;   // smallest candidate disparity, pixels for the unit baseline
+  int max_disparity = 31;  // largest candidate disparity (inclusive)
+  int window = 7;          // side of the square SAD window, odd >= 3
+
+  Prefilter prefilter = Prefilter::kXSobel;
+  int prefilter_cap = 31;  // clip of the prefiltered image, 1..127
+
+  CameraCombination combination = CameraCombination::kSum;
+
+  // Validation (paper section 2.2). Texture: the mean of |LoG| of the reference image over the
+  // window (grey levels per pixel) must exceed texture_threshold; 0 keeps every pixel.
+  double texture_threshold = 0.25;
+  double texture_sigma = 1.0;  // Gaussian sigma of the LoG, pixels
+  // Uniqueness: best window score / sum of the scores of all candidates must be below this. A
+  // flat score curve has ratio 1/(number of candidates), so the useful range scales with the
+  // disparity range: 0.02 suits the default 32 candidates, 0.04 suits 16; 1 keeps every pixel.
+  double uniqueness_threshold = 0.02;
+  // Left-right consistency: match again with the first secondary camera as reference and keep a
+  // pixel only if the disparity found there differs by at most left_right_max_diff.
+  bool left_right_check = true;
+  double left_right_max_diff = 1.0;
+  bool subpixel = false;  // parabola through the best score and its neighbours (section 3.2: off)
+
+  int threads = 1;  // horizontal stripes matched in parallel (cv::parallel_for_)
+
+  // Only for the OpenCV backends (their own validation, in their own units).
+  int opencv_texture_threshold = 10;  // cv::StereoBM::setTextureThreshold
+  int opencv_uniqueness_ratio = 15;   // percent, cv::StereoMatcher uniqueness
+  int opencv_speckle_window = 0;      // cv::StereoMatcher::setSpeckleWindowSize (0 = off)
+  int opencv_speckle_range = 0;       // cv::StereoMatcher::setSpeckleRange
+
+  int disparityCount() const { return max_disparity - min_disparity + 1; }
+};
+
+// Loads and validates the [stereo] section; throws ConfigError "[stereo] key: why". Keys are the
+// member names above; enums as text: backend = sad | bm | sgbm, prefilter = none | xsobel | log,
+// combination = sum | best_half.
+StereoOptions loadStereoOptions(IniSection& section);
+
+// Checks the values (also after command-line overrides); throws ConfigError naming the key.
+void validateStereoOptions(const StereoOptions& options, const std::string& section = "stereo");
+
+// The text form of the enums, as written in ini files.
+StereoBackend parseStereoBackend(const std::string& text, const std::string& what);
+const char* toString(StereoBackend backend);
+
+}  // namespace stereonav

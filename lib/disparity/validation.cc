@@ -1,0 +1,55 @@
+#include "disparity/validation.h"
+
+#include <opencv2/imgproc.hpp>
+
+#include <cmath>
+
+#include "disparity/disparity_image.h"
+#include "disparity/prefilter.h"
+
+namespace stereonav {
+
+cv::Mat1f textureMap(const cv::Mat1b& reference, int window, double sigma) {
+  const cv::Mat1f magnitude = cv::abs(laplacianOfGaussian(reference, sigma));
+  cv::Mat1f texture;
+  cv::boxFilter(magnitude, texture, CV_32F, cv::Size(window, window), cv::Point(-1, -1), true,
+                cv::BORDER_REPLICATE);
+  return texture;
+}
+
+void rejectLowTexture(cv::Mat1f& disparity, const cv::Mat1f& texture, double threshold) {
+  CV_Assert(disparity.size() == texture.size());
+  disparity.setTo(kInvalidDisparity, texture <= threshold);
+}
+
+void rejectAmbiguousMatches(cv::Mat1f& disparity, const SadMatch& match, double threshold) {
+  CV_Assert(disparity.size() == match.best_score.size() && disparity.size() == match.score_sum.size());
+  for (int y = 0; y < disparity.rows; ++y) {
+    float* row = disparity.ptr<float>(y);
+    const int* best = match.best_score.ptr<int>(y);
+    const int* sum = match.score_sum.ptr<int>(y);
+    for (int x = 0; x < disparity.cols; ++x) {
+      if (!(best[x] < threshold * sum[x])) row[x] = kInvalidDisparity;
+    }
+  }
+}
+
+void rejectInconsistentMatches(cv::Mat1f& disparity, const cv::Mat1f& swapped, const SecondaryCamera& first,
+                               double max_difference) {
+  CV_Assert(disparity.size() == swapped.size());
+  for (int y = 0; y < disparity.rows; ++y) {
+    float* row = disparity.ptr<float>(y);
+    for (int x = 0; x < disparity.cols; ++x) {
+      const float d = row[x];
+      if (!isValidDisparity(d)) continue;
+      const long xs = std::lround(x - first.bx * d), ys = std::lround(y - first.by * d);
+      const bool inside = xs >= 0 && xs < disparity.cols && ys >= 0 && ys < disparity.rows;
+      // An invalid swapped disparity (+inf) fails the comparison as well.
+      if (!inside || !(std::abs(swapped(static_cast<int>(ys), static_cast<int>(xs)) - d) <= max_difference)) {
+        row[x] = kInvalidDisparity;
+      }
+    }
+  }
+}
+
+}  // namespace stereonav

@@ -1,0 +1,31 @@
+#pragma once
+
+#include <opencv2/core.hpp>
+
+#include "disparity/sad_matcher.h"
+#include "rig/camera_rig.h"
+
+namespace stereonav {
+
+// The validation tests of paper section 2.2. Each marks rejected pixels kInvalidDisparity in
+// place; each is tuned by one threshold, trading quantity of data for quality.
+
+// Mean of |Laplacian of Gaussian| of the reference image over a window x window square, in grey
+// levels: low in untextured patches, whose matches are ambiguous.
+cv::Mat1f textureMap(const cv::Mat1b& reference, int window, double sigma);
+
+// "Sufficient texture" test: rejects pixels whose texture (textureMap) is not above `threshold`.
+void rejectLowTexture(cv::Mat1f& disparity, const cv::Mat1f& texture, double threshold);
+
+// "Quality of match" test: rejects pixels whose best score divided by the sum of all candidate
+// scores is not below `threshold` (a flat score curve, typical of occlusions and repetition).
+void rejectAmbiguousMatches(cv::Mat1f& disparity, const SadMatch& match, double threshold);
+
+// Left-right consistency: `swapped` is the disparity image matched with `first` camera as the
+// reference (swapReferenceWithFirstSecondary). A pixel at disparity d is kept only if the pixel
+// it matches in that camera, at (x - bx*d, y - by*d) rounded, found a disparity within
+// `max_difference` of d.
+void rejectInconsistentMatches(cv::Mat1f& disparity, const cv::Mat1f& swapped, const SecondaryCamera& first,
+                               double max_difference);
+
+}  // namespace stereonav

@@ -1,0 +1,96 @@
+#include "occupancy_grid/disparity_scan_inserter.h"
+
+#include <algorithm>
+
+namespace stereonav {
+
+namespace {
+
+// The part of a span inside the grid (the grid is grown to cover every region, this only guards
+// against rounding at its border).
+bool clipToGrid(const CellSpan& span, const DisparityTaggedGrid& grid, int& begin, int& end) {
+  if (span.row < 0 || span.row >= grid.height()) return false;
+  begin = std::max(span.col_begin, 0);
+  end = std::min(span.col_end, grid.width());
+  return end > begin;
+}
+
+}  // namespace
+
+DisparityScanInserter::DisparityScanInserter(const SensorModelOptions& sensor_model,
+                                             const GridUpdateOptions& update,
+                                             double growth_margin_m)
+    : model_(sensor_model), update_(update), growth_margin_m_(growth_margin_m) {}
+
+void DisparityScanInserter::insert(const DisparityScan& scan, const DisparityScanCamera& camera,
+                                   const mrpt::poses::CPose2D& robot_pose,
+                                   DisparityTaggedGrid& grid) {
+  const mrpt::poses::CPose2D camera_pose = robot_pose + cameraFloorPose(camera.pose_on_robot);
+  model_.readings(scan, camera, readings_);
+  if (readings_.empty()) return;
+  grid.growToInclude(model_.bounds(readings_, camera, camera_pose), growth_margin_m_);
+  model_.rasterize(readings_, camera, camera_pose, grid.frame(), raster_);
+
+  const CellSpan* spans = raster_.spans.data();
+  for (const ReadingSpans& reading : raster_.readings) {
+    clearCells(spans + reading.clear_begin, spans + reading.clear_end, grid);
+    const CellSpan* occupied_begin = spans + reading.occupied_begin;
+    const CellSpan* occupied_end = spans + reading.occupied_end;
+    if (occupied_begin == occupied_end) continue;
+    if (update_.accuracy_preservation &&
+        explainedByBetterEvidence(occupied_begin, occupied_end, reading.disparity, grid)) {
+      continue;
+    }
+    occupyCells(occupied_begin, occupied_end, reading.disparity, grid);
+  }
+}
+
+void DisparityScanInserter::clearCells(const CellSpan* begin, const CellSpan* end,
+                                       DisparityTaggedGrid& grid) const {
+  const int floor = update_.scale.g_min + update_.update_step;
+  const uint8_t g_min = static_cast<uint8_t>(update_.scale.g_min);
+  const uint8_t step = static_cast<uint8_t>(update_.update_step);
+  for (const CellSpan* span = begin; span != end; ++span) {
+    int col_begin, col_end;
+    if (!clipToGrid(*span, grid, col_begin, col_end)) continue;
+    uint8_t* row = grid.occupancyRow(span->row);
+    for (int col = col_begin; col < col_end; ++col) {
+      row[col] = row[col] > floor ? static_cast<uint8_t>(row[col] - step) : g_min;
+    }
+  }
+}
+
+bool DisparityScanInserter::explainedByBetterEvidence(const CellSpan* begin, const CellSpan* end,
+                                                      float disparity,
+                                                      const DisparityTaggedGrid& grid) const {
+  const uint8_t unknown = update_.scale.unknown();
+  for (const CellSpan* span = begin; span != end; ++span) {
+    int col_begin, col_end;
+    if (!clipToGrid(*span, grid, col_begin, col_end)) continue;
+    const uint8_t* occupancy = grid.occupancyRow(span->row);
+    const float* tags = grid.tagRow(span->row);
+    for (int col = col_begin; col < col_end; ++col) {
+      if (occupancy[col] > unknown && tags[col] > disparity) return true;
+    }
+  }
+  return false;
+}
+
+void DisparityScanInserter::occupyCells(const CellSpan* begin, const CellSpan* end,
+                                        float disparity, DisparityTaggedGrid& grid) const {
+  const int ceiling = update_.scale.g_max - update_.update_step;
+  const uint8_t g_max = static_cast<uint8_t>(update_.scale.g_max);
+  const uint8_t step = static_cast<uint8_t>(update_.update_step);
+  for (const CellSpan* span = begin; span != end; ++span) {
+    int col_begin, col_end;
+    if (!clipToGrid(*span, grid, col_begin, col_end)) continue;
+    uint8_t* occupancy = grid.occupancyRow(span->row);
+    float* tags = grid.tagRow(span->row);
+    for (int col = col_begin; col < col_end; ++col) {
+      occupancy[col] = occupancy[col] < ceiling ? static_cast<uint8_t>(occupancy[col] + step) : g_max;
+      tags[col] = disparity;
+    }
+  }
+}
+
+}  // namespace stereonav

@@ -1,0 +1,92 @@
+#include "occupancy_grid/disparity_tagged_grid.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace stereonav {
+
+DisparityTaggedGrid::DisparityTaggedGrid(const GridLimits& limits, const OccupancyScale& scale)
+    : scale_(scale) {
+  reset(limits);
+}
+
+namespace {
+
+// Cell boundaries sit on multiples of the resolution (as in MRPT's COccupancyGridMap2D, which
+// snaps its limits the same way), so grids of equal resolution share cells. The tolerance keeps
+// -10 / 0.05 = -200.0000001 on cell -200.
+constexpr double kLatticeTolerance = 1e-6;
+
+double latticeBelow(double coordinate, double resolution) {
+  return std::floor(coordinate / resolution + kLatticeTolerance);
+}
+double latticeAbove(double coordinate, double resolution) {
+  return std::ceil(coordinate / resolution - kLatticeTolerance);
+}
+
+}  // namespace
+
+void DisparityTaggedGrid::reset(const GridLimits& limits) {
+  const double r = limits.resolution;
+  const double first_col = latticeBelow(limits.min_x, r);
+  const double first_row = latticeBelow(limits.min_y, r);
+  frame_ = {first_col * r, first_row * r, r};
+  width_ = std::max(1, static_cast<int>(latticeAbove(limits.max_x, r) - first_col));
+  height_ = std::max(1, static_cast<int>(latticeAbove(limits.max_y, r) - first_row));
+  occupancy_.assign(static_cast<size_t>(width_) * height_, scale_.unknown());
+  tags_.assign(occupancy_.size(), kNoTag);
+}
+
+bool DisparityTaggedGrid::cellAt(double x, double y, int& col, int& row) const {
+  const double u = std::floor((x - frame_.origin_x) / frame_.resolution);
+  const double v = std::floor((y - frame_.origin_y) / frame_.resolution);
+  if (!(u >= 0 && v >= 0 && u < width_ && v < height_)) return false;
+  col = static_cast<int>(u);
+  row = static_cast<int>(v);
+  return true;
+}
+
+void DisparityTaggedGrid::growToInclude(const WorldBounds& bounds, double margin_m) {
+  const double r = frame_.resolution;
+  // Whole cells needed on each side; zero when the bounds are already inside.
+  const auto cells = [&](double outside_by) {
+    return outside_by > 0.0 ? static_cast<int>(std::ceil((outside_by + margin_m) / r)) : 0;
+  };
+  const int grow_left = cells(minX() - bounds.min_x);
+  const int grow_right = cells(bounds.max_x - maxX());
+  const int grow_down = cells(minY() - bounds.min_y);
+  const int grow_up = cells(bounds.max_y - maxY());
+  if (grow_left + grow_right + grow_down + grow_up == 0) return;
+
+  const int new_width = width_ + grow_left + grow_right;
+  const int new_height = height_ + grow_down + grow_up;
+  std::vector<uint8_t> occupancy(static_cast<size_t>(new_width) * new_height, scale_.unknown());
+  std::vector<float> tags(occupancy.size(), kNoTag);
+  for (int row = 0; row < height_; ++row) {
+    const size_t to = static_cast<size_t>(row + grow_down) * new_width + grow_left;
+    std::copy_n(occupancyRow(row), width_, occupancy.begin() + to);
+    std::copy_n(tagRow(row), width_, tags.begin() + to);
+  }
+  frame_.origin_x -= grow_left * r;
+  frame_.origin_y -= grow_down * r;
+  width_ = new_width;
+  height_ = new_height;
+  occupancy_ = std::move(occupancy);
+  tags_ = std::move(tags);
+}
+
+void DisparityTaggedGrid::assign(const GridFrame& frame, int width, int height,
+                                 std::vector<uint8_t> occupancy, std::vector<float> tags) {
+  const size_t cells = static_cast<size_t>(width) * static_cast<size_t>(height);
+  if (width <= 0 || height <= 0 || occupancy.size() != cells || tags.size() != cells) {
+    throw std::invalid_argument("DisparityTaggedGrid::assign: layer sizes do not match the grid");
+  }
+  frame_ = frame;
+  width_ = width;
+  height_ = height;
+  occupancy_ = std::move(occupancy);
+  tags_ = std::move(tags);
+}
+
+}  // namespace stereonav

@@ -1,0 +1,49 @@
+#include "occupancy_grid/observation_disparity_scan.h"
+
+#include <mrpt/serialization/CArchive.h>
+
+#include <ostream>
+
+IMPLEMENTS_SERIALIZABLE(CObservationDisparityScan, CObservation, stereonav)
+
+namespace stereonav {
+
+uint8_t CObservationDisparityScan::serializeGetVersion() const { return 0; }
+
+void CObservationDisparityScan::serializeTo(mrpt::serialization::CArchive& out) const {
+  out << timestamp << sensorLabel;
+  out << camera.focal_px << camera.cx << camera.baseline_m << camera.pose_on_robot;
+  out.WriteAs<uint32_t>(scan.column_disparity.size());
+  out.WriteBufferFixEndianness(scan.column_disparity.data(), scan.column_disparity.size());
+  out.WriteAs<uint32_t>(scan.column_row.size());
+  for (const int row : scan.column_row) out.WriteAs<int32_t>(row);
+}
+
+void CObservationDisparityScan::serializeFrom(mrpt::serialization::CArchive& in,
+                                              uint8_t version) {
+  switch (version) {
+    case 0: {
+      in >> timestamp >> sensorLabel;
+      in >> camera.focal_px >> camera.cx >> camera.baseline_m >> camera.pose_on_robot;
+      scan.column_disparity.resize(in.ReadAs<uint32_t>());
+      in.ReadBufferFixEndianness(scan.column_disparity.data(), scan.column_disparity.size());
+      scan.column_row.resize(in.ReadAs<uint32_t>());
+      for (int& row : scan.column_row) row = in.ReadAs<int32_t>();
+      break;
+    }
+    default:
+      MRPT_THROW_UNKNOWN_SERIALIZATION_VERSION(version);
+  }
+}
+
+void CObservationDisparityScan::getDescriptionAsText(std::ostream& o) const {
+  CObservation::getDescriptionAsText(o);
+  int valid = 0;
+  for (int column = 0; column < scan.columns(); ++column) valid += scan.valid(column) ? 1 : 0;
+  o << "Disparity scan: " << scan.columns() << " columns, " << valid << " with a disparity\n"
+    << "focal_px=" << camera.focal_px << " cx=" << camera.cx
+    << " baseline_m=" << camera.baseline_m << "\n"
+    << "Camera optical frame on the robot: " << camera.pose_on_robot << "\n";
+}
+
+}  // namespace stereonav
