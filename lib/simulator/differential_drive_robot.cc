@@ -1,0 +1,141 @@
+#include "simulator/differential_drive_robot.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "simulator/footprint_overlap.h"
+
+namespace stereonav {
+namespace {
+
+// The pose change of driving `distance` along an arc that turns by `turn` (exact for constant
+// wheel speeds).
+mrpt::poses::CPose2D arcIncrement(double distance, double turn) {
+  if (std::abs(turn) < 1e-9) return {distance, 0.0, turn};
+  return {distance * std::sin(turn) / turn, distance * (1.0 - std::cos(turn)) / turn, turn};
+}
+
+double towards(double current, double target, double max_change) {
+  return current + std::clamp(target - current, -max_change, max_change);
+}
+
+// Contact is located to this fraction of a step.
+constexpr int kContactBisections = 20;
+
+}  // namespace
+
+DifferentialDriveOptions loadDifferentialDriveOptions(IniSection& section) {
+  DifferentialDriveOptions options;
+  const auto positive = [&](const std::string& key, double value) {
+    const double read = section.getDouble(key, value);
+    if (!(read > 0.0)) throw ConfigError("[" + section.name() + "] " + key + ": must be positive");
+    return read;
+  };
+  const auto non_negative = [&](const std::string& key, double value) {
+    const double read = section.getDouble(key, value);
+    if (!(read >= 0.0)) throw ConfigError("[" + section.name() + "] " + key + ": must be >= 0");
+    return read;
+  };
+  options.max_speed_mps = positive("max_speed_mps", options.max_speed_mps);
+  options.max_turn_rate = positive("max_turn_rate", options.max_turn_rate);
+  options.max_acceleration = positive("max_acceleration", options.max_acceleration);
+  options.max_turn_acceleration = positive("max_turn_acceleration", options.max_turn_acceleration);
+  options.radius_m = positive("radius_m", options.radius_m);
+  options.height_m = positive("height_m", options.height_m);
+  options.odometry_distance_noise = non_negative("odometry_distance_noise", options.odometry_distance_noise);
+  options.odometry_turn_noise = non_negative("odometry_turn_noise", options.odometry_turn_noise);
+  options.odometry_drift_rad_per_m = non_negative("odometry_drift_rad_per_m", options.odometry_drift_rad_per_m);
+  options.seed = section.getInt("seed", options.seed);
+  return options;
+}
+
+DifferentialDriveRobot::DifferentialDriveRobot(const World& world, DifferentialDriveOptions options,
+                                               const mrpt::poses::CPose2D& start)
+    : world_(world),
+      options_(options),
+      pose_(start),
+      odometry_(start),
+      random_(static_cast<std::mt19937::result_type>(options.seed)) {
+  for (const auto& solid : world.solids) {
+    if (solidInHeightBand(solid, 0.0, options_.height_m)) static_in_band_.push_back(solid);
+  }
+}
+
+bool DifferentialDriveRobot::footprintCollides(double x, double y, double time_s) const {
+  for (const auto& solid : static_in_band_) {
+    if (solidOverlapsDisc(solid, x, y, options_.radius_m)) return true;
+  }
+  for (const auto& obstacle : world_.moving_obstacles) {
+    const Solid placed = obstacle.at(time_s);
+    if (solidInHeightBand(placed, 0.0, options_.height_m) &&
+        solidOverlapsDisc(placed, x, y, options_.radius_m)) {
+      return true;
+    }
+  }
+  return false;
+}
+
+bool DifferentialDriveRobot::step(double commanded_speed, double commanded_turn_rate, double dt,
+                                  double time_s) {
+  const double target_speed = std::clamp(commanded_speed, -options_.max_speed_mps, options_.max_speed_mps);
+  const double target_turn = std::clamp(commanded_turn_rate, -options_.max_turn_rate, options_.max_turn_rate);
+  speed_ = towards(speed_, target_speed, options_.max_acceleration * dt);
+  turn_rate_ = towards(turn_rate_, target_turn, options_.max_turn_acceleration * dt);
+
+  const double distance = speed_ * dt;
+  const double turn = turn_rate_ * dt;
+  const double end_time = time_s + dt;
+  const auto collidesAt = [&](double fraction) {
+    const mrpt::poses::CPose2D there = pose_ + arcIncrement(fraction * distance, fraction * turn);
+    return footprintCollides(there.x(), there.y(), end_time);
+  };
+
+  // Check the arc in pieces shorter than half the radius, so no thin wall is jumped over; then
+  // bisect between the last free and the first blocked piece to stop at contact.
+  double free_fraction = 1.0;
+  bool blocked = false;
+  if (collidesAt(0.0)) {
+    // Something moved into the robot: it may only drive out of it.
+    blocked = collidesAt(1.0);
+    free_fraction = blocked ? 0.0 : 1.0;
+  } else {
+    const int pieces = std::max(1, static_cast<int>(std::ceil(std::abs(distance) / (options_.radius_m / 2))));
+    for (int k = 1; k <= pieces; ++k) {
+      const double fraction = static_cast<double>(k) / pieces;
+      if (!collidesAt(fraction)) continue;
+      double low = static_cast<double>(k - 1) / pieces;
+      double high = fraction;
+      for (int i = 0; i < kContactBisections; ++i) {
+        const double middle = (low + high) / 2;
+        (collidesAt(middle) ? high : low) = middle;
+      }
+      free_fraction = low;
+      blocked = true;
+      break;
+    }
+  }
+
+  const double travelled = free_fraction * distance;
+  const double turned = free_fraction * turn;
+  pose_ = pose_ + arcIncrement(travelled, turned);
+  pose_.normalizePhi();
+
+  std::normal_distribution<double> unit(0.0, 1.0);
+  const double measured_distance =
+      travelled + unit(random_) * options_.odometry_distance_noise * std::abs(travelled);
+  const double measured_turn =
+      turned + unit(random_) * (options_.odometry_turn_noise * std::abs(turned) +
+                                options_.odometry_drift_rad_per_m * std::abs(travelled));
+  odometry_ = odometry_ + arcIncrement(measured_distance, measured_turn);
+  odometry_.normalizePhi();
+
+  if (blocked) {
+    speed_ = 0.0;
+    turn_rate_ = 0.0;
+    if (!in_contact_) ++collisions_;
+  }
+  in_contact_ = blocked;
+  return !blocked;
+}
+
+}  // namespace stereonav

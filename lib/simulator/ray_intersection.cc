@@ -1,0 +1,146 @@
+#include "simulator/ray_intersection.h"
+
+#include <cmath>
+
+namespace stereonav {
+namespace {
+
+// Below this a hit is taken to be at the ray's own origin (a surface the ray starts on).
+constexpr double kMinimumT = 1e-9;
+
+// Slab test on one axis: narrows [t_near, t_far]; returns false if the ray misses the slab.
+bool clipSlab(double origin, double direction, double low, double high, int entry_face,
+              double* t_near, double* t_far, int* near_face) {
+  if (direction == 0.0) return origin >= low && origin <= high;
+  const double inverse = 1.0 / direction;
+  double t_low = (low - origin) * inverse;
+  double t_high = (high - origin) * inverse;
+  // Entering through the low side means crossing the face whose normal points to -axis.
+  int face = entry_face + 1;
+  if (t_low > t_high) {
+    std::swap(t_low, t_high);
+    face = entry_face;
+  }
+  if (t_low > *t_near) {
+    *t_near = t_low;
+    *near_face = face;
+  }
+  if (t_high < *t_far) *t_far = t_high;
+  return *t_near <= *t_far;
+}
+
+double intersectBox(const Solid& box, const Ray& ray, double t_max, int* face) {
+  // Into the box frame: rotate by -yaw about the box centre.
+  const double px = ray.origin.x() - box.x;
+  const double py = ray.origin.y() - box.y;
+  const double local_ox = box.cos_yaw * px + box.sin_yaw * py;
+  const double local_oy = -box.sin_yaw * px + box.cos_yaw * py;
+  const double local_dx = box.cos_yaw * ray.direction.x() + box.sin_yaw * ray.direction.y();
+  const double local_dy = -box.sin_yaw * ray.direction.x() + box.cos_yaw * ray.direction.y();
+  double t_near = -kNoHit;
+  double t_far = t_max;
+  int near_face = -1;
+  if (!clipSlab(local_ox, local_dx, -box.half_x, box.half_x, kFacePlusX, &t_near, &t_far, &near_face) ||
+      !clipSlab(local_oy, local_dy, -box.half_y, box.half_y, kFacePlusY, &t_near, &t_far, &near_face) ||
+      !clipSlab(ray.origin.z(), ray.direction.z(), box.z_min, box.z_max, kFaceTop, &t_near, &t_far,
+                &near_face)) {
+    return kNoHit;
+  }
+  if (t_near <= kMinimumT || near_face < 0) return kNoHit;
+  *face = near_face;
+  return t_near;
+}
+
+double intersectCylinder(const Solid& cylinder, const Ray& ray, double t_max, int* face) {
+  const double px = ray.origin.x() - cylinder.x;
+  const double py = ray.origin.y() - cylinder.y;
+  const double dx = ray.direction.x();
+  const double dy = ray.direction.y();
+  const double dz = ray.direction.z();
+  const double r2 = cylinder.radius * cylinder.radius;
+  double best = kNoHit;
+  const double a = dx * dx + dy * dy;
+  const double c = px * px + py * py - r2;
+  if (a > 0.0) {
+    const double b = px * dx + py * dy;  // half of the usual b
+    const double discriminant = b * b - a * c;
+    if (discriminant >= 0.0) {
+      const double t = (-b - std::sqrt(discriminant)) / a;
+      const double z = ray.origin.z() + t * dz;
+      if (t > kMinimumT && t < t_max && z >= cylinder.z_min && z <= cylinder.z_max) {
+        best = t;
+        *face = kFacePlusX;
+      }
+    }
+  }
+  // The caps, entered from above (top) or below (bottom).
+  const double cap_z = dz < 0.0 ? cylinder.z_max : cylinder.z_min;
+  const bool outside_cap = dz < 0.0 ? ray.origin.z() > cylinder.z_max : ray.origin.z() < cylinder.z_min;
+  if (dz != 0.0 && outside_cap) {
+    const double t = (cap_z - ray.origin.z()) / dz;
+    const double hx = px + t * dx;
+    const double hy = py + t * dy;
+    if (t > kMinimumT && t < std::min(best, t_max) && hx * hx + hy * hy <= r2) {
+      best = t;
+      *face = dz < 0.0 ? kFaceTop : kFaceBottom;
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+double intersectSolid(const Solid& solid, const Ray& ray, double t_max, int* face) {
+  return solid.shape == Solid::Shape::kBox ? intersectBox(solid, ray, t_max, face)
+                                           : intersectCylinder(solid, ray, t_max, face);
+}
+
+double intersectHorizontalPlane(double z, const Ray& ray, double t_max) {
+  if (ray.direction.z() == 0.0) return kNoHit;
+  const double t = (z - ray.origin.z()) / ray.direction.z();
+  return t > kMinimumT && t < t_max ? t : kNoHit;
+}
+
+SurfacePoint surfaceOfSolid(const Solid& solid, int face, const Ray& ray, double t) {
+  SurfacePoint point;
+  point.position = ray.origin + t * ray.direction;
+  const double px = point.position.x() - solid.x;
+  const double py = point.position.y() - solid.y;
+  if (face == kFaceTop || face == kFaceBottom) {
+    point.normal = Eigen::Vector3d(0.0, 0.0, face == kFaceTop ? 1.0 : -1.0);
+    point.u = px;
+    point.v = py;
+    return point;
+  }
+  point.v = point.position.z();
+  if (solid.shape == Solid::Shape::kCylinder) {
+    point.normal = Eigen::Vector3d(px / solid.radius, py / solid.radius, 0.0);
+    point.u = solid.radius * std::atan2(py, px);
+    return point;
+  }
+  const double local_x = solid.cos_yaw * px + solid.sin_yaw * py;
+  const double local_y = -solid.sin_yaw * px + solid.cos_yaw * py;
+  const Eigen::Vector3d axis_x(solid.cos_yaw, solid.sin_yaw, 0.0);
+  const Eigen::Vector3d axis_y(-solid.sin_yaw, solid.cos_yaw, 0.0);
+  switch (face) {
+    case kFacePlusX:
+      point.normal = axis_x;
+      point.u = local_y;
+      break;
+    case kFaceMinusX:
+      point.normal = -axis_x;
+      point.u = -local_y;
+      break;
+    case kFacePlusY:
+      point.normal = axis_y;
+      point.u = -local_x;
+      break;
+    default:
+      point.normal = -axis_y;
+      point.u = local_x;
+      break;
+  }
+  return point;
+}
+
+}  // namespace stereonav

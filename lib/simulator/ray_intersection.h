@@ -1,0 +1,46 @@
+#pragma once
+
+#include <Eigen/Core>
+
+#include <limits>
+
+#include "simulator/world.h"
+
+namespace stereonav {
+
+// A ray origin + t * direction, t >= 0. The direction need not be unit length: the renderer uses
+// camera-frame directions ((x - cx)/f, (y - cy)/f, 1), so that t is the depth Z of the hit.
+struct Ray {
+  Eigen::Vector3d origin;
+  Eigen::Vector3d direction;
+};
+
+constexpr double kNoHit = std::numeric_limits<double>::infinity();
+
+// Which face of a solid a ray hit. Boxes: 0..5 = +x, -x, +y, -y (the box's own axes), top,
+// bottom. Cylinders: 0 = side, 4 = top, 5 = bottom.
+enum SolidFace : int { kFacePlusX = 0, kFaceMinusX, kFacePlusY, kFaceMinusY, kFaceTop, kFaceBottom };
+
+// The smallest t in (0, t_max) where the ray enters the solid from outside, or kNoHit (also when
+// the origin is inside the solid: a camera never looks out of an obstacle). Sets *face on a hit.
+double intersectSolid(const Solid& solid, const Ray& ray, double t_max, int* face);
+
+// t where the ray crosses the horizontal plane at height z, in (0, t_max), or kNoHit.
+double intersectHorizontalPlane(double z, const Ray& ray, double t_max);
+
+// What the renderer needs to know about a hit point.
+struct SurfacePoint {
+  Eigen::Vector3d position;
+  Eigen::Vector3d normal;  // unit, facing out of the solid
+  double u = 0.0;          // surface coordinates, metres (vertical faces: v is the height)
+  double v = 0.0;
+};
+
+// Surface coordinates are fixed to the solid, so a moving obstacle carries its texture along.
+// Side faces: v is the height above the floor and u the horizontal distance from the middle of the
+// face, increasing to the right as seen from the front (box faces), or the arc length
+// counter-clockwise from the solid's +x direction (cylinders). Top and bottom faces: u, v are
+// x, y relative to the solid's centre, along the world axes.
+SurfacePoint surfaceOfSolid(const Solid& solid, int face, const Ray& ray, double t);
+
+}  // namespace stereonav

@@ -1,0 +1,160 @@
+#include "simulator/surface_texture.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "simulator/number_list.h"
+
+namespace stereonav {
+namespace {
+
+uint32_t hashLattice(int32_t x, int32_t y, uint32_t seed) {
+  // Integer avalanche mix: neighbouring lattice points get unrelated values.
+  uint32_t h = static_cast<uint32_t>(x) * 0x8da6b343u ^ static_cast<uint32_t>(y) * 0xd8163841u ^
+               seed * 0xcb1ab31fu;
+  h ^= h >> 16;
+  h *= 0x7feb352du;
+  h ^= h >> 15;
+  h *= 0x846ca68bu;
+  h ^= h >> 16;
+  return h;
+}
+
+double latticeValue(int32_t x, int32_t y, uint32_t seed) {
+  return (hashLattice(x, y, seed) & 0xffffu) * (2.0 / 65535.0) - 1.0;
+}
+
+// How much of an octave of wavelength `wavelength` survives a pixel footprint: all of it above
+// four pixels per wavelength, none below two (where it could only alias).
+double octaveWeight(double wavelength, double footprint) {
+  if (footprint <= 0.0) return 1.0;
+  return std::clamp((wavelength / footprint - 2.0) / 2.0, 0.0, 1.0);
+}
+
+double multiScaleNoise(const SurfaceTexture& texture, double u, double v, double footprint) {
+  double sum = 0.0;
+  for (size_t i = 0; i < texture.scales_m.size(); ++i) {
+    const double wavelength = texture.scales_m[i];
+    const double weight = octaveWeight(wavelength, footprint);
+    if (weight == 0.0) continue;
+    sum += weight * valueNoise(u / wavelength, v / wavelength, texture.seed + 1013u * i);
+  }
+  // Interpolated value noise has a standard deviation near 1/3 per octave.
+  return sum * 3.0 / std::sqrt(static_cast<double>(texture.scales_m.size()));
+}
+
+// Integral of the unit square wave (1 on the first `duty` of each period) from 0 to s.
+double squareWaveIntegral(double s, double period, double duty) {
+  const double cycles = std::floor(s / period);
+  return cycles * duty * period + std::min(s - cycles * period, duty * period);
+}
+
+double stripes(const SurfaceTexture& texture, double u, double v, double footprint) {
+  const double s = texture.vertical_stripes ? u : v;
+  double lit;
+  if (footprint <= 1e-9) {
+    const double phase = s - std::floor(s / texture.period_m) * texture.period_m;
+    lit = phase < texture.duty * texture.period_m ? 1.0 : 0.0;
+  } else {
+    // Box filter over the footprint, done exactly through the integral of the square wave.
+    lit = (squareWaveIntegral(s + footprint / 2, texture.period_m, texture.duty) -
+           squareWaveIntegral(s - footprint / 2, texture.period_m, texture.duty)) /
+          footprint;
+  }
+  return 2.0 * lit - 1.0;
+}
+
+}  // namespace
+
+double valueNoise(double x, double y, uint32_t seed) {
+  // Truncation corrected for negative values: std::floor is a library call on baseline x86-64,
+  // and this runs several times per pixel.
+  int32_t ix = static_cast<int32_t>(x);
+  int32_t iy = static_cast<int32_t>(y);
+  ix -= x < ix;
+  iy -= y < iy;
+  const double tx = x - ix;
+  const double ty = y - iy;
+  const double sx = tx * tx * (3.0 - 2.0 * tx);
+  const double sy = ty * ty * (3.0 - 2.0 * ty);
+  const double a = latticeValue(ix, iy, seed);
+  const double b = latticeValue(ix + 1, iy, seed);
+  const double c = latticeValue(ix, iy + 1, seed);
+  const double d = latticeValue(ix + 1, iy + 1, seed);
+  return (a + (b - a) * sx) + ((c + (d - c) * sx) - (a + (b - a) * sx)) * sy;
+}
+
+double SurfaceTexture::albedo(double u, double v, double footprint_m, double noise_shift) const {
+  double signal = 0.0;
+  switch (kind) {
+    case Kind::kPaint:
+      return mean;
+    case Kind::kNoise:
+      signal = multiScaleNoise(*this, u + noise_shift, v, footprint_m);
+      break;
+    case Kind::kStripes:
+      signal = stripes(*this, u, v, footprint_m);
+      break;
+    case Kind::kPoster:
+      if (u < poster_rect[0] || u > poster_rect[2] || v < poster_rect[1] || v > poster_rect[3]) {
+        return mean;
+      }
+      signal = multiScaleNoise(*this, u + noise_shift, v, footprint_m);
+      break;
+  }
+  return std::clamp(mean + contrast * signal, 0.0, 1.0);
+}
+
+SurfaceTexture loadSurfaceTexture(IniSection& section) {
+  const auto where = [&](const std::string& key) { return "[" + section.name() + "] " + key; };
+  SurfaceTexture texture;
+  const std::string type = section.getString("type", "noise");
+  if (type == "noise") {
+    texture.kind = SurfaceTexture::Kind::kNoise;
+  } else if (type == "paint") {
+    texture.kind = SurfaceTexture::Kind::kPaint;
+  } else if (type == "stripes") {
+    texture.kind = SurfaceTexture::Kind::kStripes;
+  } else if (type == "poster") {
+    texture.kind = SurfaceTexture::Kind::kPoster;
+  } else {
+    throw ConfigError(where("type") + ": expected noise, paint, stripes or poster, got '" + type + "'");
+  }
+  texture.mean = section.getDouble("mean", texture.mean);
+  texture.contrast = section.getDouble("contrast", texture.contrast);
+  if (section.has("scales_m")) {
+    texture.scales_m = parseNumberList(section.getString("scales_m", ""), where("scales_m"));
+  }
+  texture.period_m = section.getDouble("period_m", texture.period_m);
+  texture.duty = section.getDouble("duty", texture.duty);
+  const std::string orientation = section.getString("orientation", "vertical");
+  if (orientation != "vertical" && orientation != "horizontal") {
+    throw ConfigError(where("orientation") + ": expected vertical or horizontal, got '" +
+                      orientation + "'");
+  }
+  texture.vertical_stripes = orientation == "vertical";
+  if (section.has("rect")) {
+    const auto rect = parseNumberList(section.getString("rect", ""), where("rect"), 4);
+    std::copy(rect.begin(), rect.end(), texture.poster_rect.begin());
+  }
+  const int seed = section.getInt("seed", static_cast<int>(texture.seed));
+  if (seed < 0) throw ConfigError(where("seed") + ": must be non-negative");
+  texture.seed = static_cast<uint32_t>(seed);
+
+  if (texture.mean < 0.0 || texture.mean > 1.0) throw ConfigError(where("mean") + ": must be in [0, 1]");
+  if (texture.contrast < 0.0 || texture.contrast > 1.0) {
+    throw ConfigError(where("contrast") + ": must be in [0, 1]");
+  }
+  if (texture.scales_m.empty()) throw ConfigError(where("scales_m") + ": needs at least one wavelength");
+  for (double scale : texture.scales_m) {
+    if (scale <= 0.0) throw ConfigError(where("scales_m") + ": wavelengths must be positive");
+  }
+  if (texture.period_m <= 0.0) throw ConfigError(where("period_m") + ": must be positive");
+  if (texture.duty <= 0.0 || texture.duty >= 1.0) throw ConfigError(where("duty") + ": must be in (0, 1)");
+  if (texture.poster_rect[2] <= texture.poster_rect[0] || texture.poster_rect[3] <= texture.poster_rect[1]) {
+    throw ConfigError(where("rect") + ": expected u0 v0 u1 v1 with u1 > u0 and v1 > v0");
+  }
+  return texture;
+}
+
+}  // namespace stereonav

@@ -1,0 +1,344 @@
+#include "simulator/world_loader.h"
+
+#include <mrpt/config/CConfigFile.h>
+#include <mrpt/core/bits_math.h>
+
+#include <cmath>
+#include <fstream>
+#include <map>
+
+#include "common/ini_section.h"
+#include "simulator/number_list.h"
+
+namespace stereonav {
+namespace {
+
+constexpr const char* kDefaultTexture = "default";
+
+class WorldBuilder {
+ public:
+  explicit WorldBuilder(const mrpt::config::CConfigFileBase& config) : config_(config) {}
+
+  World build() {
+    std::vector<std::string> sections;
+    config_.getAllSections(sections);
+    defineTexture(kDefaultTexture, SurfaceTexture{});
+    for (const auto& name : sections) {
+      if (kindOf(name) == "texture") {
+        IniSection section(config_, name);
+        defineTexture(name.substr(name.find('.') + 1), loadSurfaceTexture(section));
+        section.rejectUnknownKeys();
+      }
+    }
+    IniSection world_section(config_, "world");
+    loadWorldSection(world_section);
+    for (const auto& name : sections) {
+      const std::string kind = kindOf(name);
+      if (name == "world" || kind == "texture") continue;
+      IniSection section(config_, name);
+      if (kind == "wall") {
+        addWall(section);
+      } else if (kind == "box") {
+        addBox(section);
+      } else if (kind == "cylinder") {
+        addCylinder(section);
+      } else if (kind == "table") {
+        addTable(section);
+      } else if (kind == "picket_fence") {
+        addPicketFence(section);
+      } else if (kind == "moving") {
+        addMovingObstacle(section);
+      } else {
+        throw ConfigError("[" + name +
+                          "]: unknown section; expected [world] or [<kind>.<name>] with kind "
+                          "texture, wall, box, cylinder, table, picket_fence or moving");
+      }
+      section.rejectUnknownKeys();
+    }
+    // Every solid gets its own patch of texture, except fence pickets, which are meant to look
+    // identical.
+    for (size_t i = 0; i < world_.solids.size(); ++i) {
+      if (!identical_texture_[i]) world_.solids[i].texture_offset = 37.1 * static_cast<double>(i);
+    }
+    if (!explicit_bounds_) computeBounds();
+    return world_;
+  }
+
+ private:
+  static std::string kindOf(const std::string& section_name) {
+    const size_t dot = section_name.find('.');
+    return dot == std::string::npos ? section_name : section_name.substr(0, dot);
+  }
+
+  static std::string where(const IniSection& section, const std::string& key) {
+    return "[" + section.name() + "] " + key;
+  }
+
+  static void fail(const IniSection& section, const std::string& key, const std::string& why) {
+    throw ConfigError(where(section, key) + ": " + why);
+  }
+
+  // Declares every key a kind of section understands before any is read, so that a misspelt
+  // required key is reported as the misspelling, not as a missing key.
+  static void acceptOnly(IniSection& section, std::initializer_list<const char*> keys) {
+    for (const char* key : keys) section.getString(key, "");
+    section.rejectUnknownKeys();
+  }
+
+  void defineTexture(const std::string& name, const SurfaceTexture& texture) {
+    const auto known = texture_index_.find(name);
+    if (known != texture_index_.end()) {
+      world_.textures[known->second] = texture;
+      return;
+    }
+    texture_index_[name] = static_cast<int>(world_.textures.size());
+    world_.textures.push_back(texture);
+  }
+
+  int textureOf(IniSection& section, const std::string& key) {
+    const std::string name = section.getString(key, kDefaultTexture);
+    const auto known = texture_index_.find(name);
+    if (known == texture_index_.end()) {
+      fail(section, key, "no section [texture." + name + "] defines texture '" + name + "'");
+    }
+    return known->second;
+  }
+
+  double positive(IniSection& section, const std::string& key, double default_value) {
+    const double value = section.getDouble(key, default_value);
+    if (!(value > 0.0)) fail(section, key, "must be positive");
+    return value;
+  }
+
+  double nonNegative(IniSection& section, const std::string& key, double default_value) {
+    const double value = section.getDouble(key, default_value);
+    if (!(value >= 0.0)) fail(section, key, "must be >= 0");
+    return value;
+  }
+
+  std::vector<double> numbers(IniSection& section, const std::string& key, int count) {
+    if (!section.has(key)) fail(section, key, "missing");
+    return parseNumberList(section.getString(key, ""), where(section, key), count);
+  }
+
+  std::vector<Point2> points(IniSection& section, const std::string& key, size_t minimum) {
+    if (!section.has(key)) fail(section, key, "missing");
+    return parsePointList(section.getString(key, ""), where(section, key), minimum);
+  }
+
+  void addSolid(const Solid& solid, bool identical_texture = false) {
+    world_.solids.push_back(solid);
+    identical_texture_.push_back(identical_texture);
+  }
+
+  void loadWorldSection(IniSection& section) {
+    if (section.has("bounds")) {
+      const auto b = numbers(section, "bounds", 4);
+      if (b[2] <= b[0] || b[3] <= b[1]) fail(section, "bounds", "expected x_min y_min x_max y_max");
+      std::copy(b.begin(), b.end(), world_.bounds);
+      explicit_bounds_ = true;
+    }
+    if (section.has("start_pose")) {
+      const auto pose = numbers(section, "start_pose", 3);
+      world_.start_pose[0] = pose[0];
+      world_.start_pose[1] = pose[1];
+      world_.start_pose[2] = mrpt::DEG2RAD(pose[2]);
+    }
+    wall_thickness_ = positive(section, "wall_thickness", wall_thickness_);
+    const bool textured_floor = section.getBool("floor_texture", true);
+    world_.floor_texture = textureOf(section, "floor");
+    if (!textured_floor) {
+      SurfaceTexture paint;
+      paint.kind = SurfaceTexture::Kind::kPaint;
+      paint.mean = world_.textures[world_.floor_texture].mean;
+      world_.floor_texture = static_cast<int>(world_.textures.size());
+      world_.textures.push_back(paint);
+    }
+    world_.ceiling_height = nonNegative(section, "ceiling_height", 0.0);
+    world_.ceiling_texture = textureOf(section, "ceiling");
+    world_.lighting_change = section.getDouble("lighting_change", 0.0);
+    if (world_.lighting_change < 0.0 || world_.lighting_change >= 1.0) {
+      fail(section, "lighting_change", "must be in [0, 1)");
+    }
+    world_.lighting_period_s = positive(section, "lighting_period_s", world_.lighting_period_s);
+    section.rejectUnknownKeys();
+  }
+
+  void addWall(IniSection& section) {
+    acceptOnly(section, {"points", "height", "thickness", "texture"});
+    const auto corners = points(section, "points", 2);
+    const double height = positive(section, "height", 2.5);
+    const double thickness = positive(section, "thickness", wall_thickness_);
+    const int texture = textureOf(section, "texture");
+    for (size_t i = 0; i + 1 < corners.size(); ++i) {
+      const Point2& a = corners[i];
+      const Point2& b = corners[i + 1];
+      const double length = std::hypot(b.x - a.x, b.y - a.y);
+      if (length <= 0.0) fail(section, "points", "two consecutive points coincide");
+      // Each slab runs half a thickness past its end points, so corners close.
+      addSolid(Solid::box((a.x + b.x) / 2, (a.y + b.y) / 2, length + thickness, thickness,
+                          std::atan2(b.y - a.y, b.x - a.x), 0.0, height, texture));
+    }
+  }
+
+  void addBox(IniSection& section) {
+    acceptOnly(section, {"center", "size", "yaw_deg", "z", "height", "texture"});
+    const auto center = numbers(section, "center", 2);
+    const auto size = numbers(section, "size", 2);
+    if (!(size[0] > 0.0 && size[1] > 0.0)) fail(section, "size", "must be positive");
+    const double yaw = mrpt::DEG2RAD(section.getDouble("yaw_deg", 0.0));
+    const double z = nonNegative(section, "z", 0.0);
+    const double height = positive(section, "height", 1.0);
+    addSolid(Solid::box(center[0], center[1], size[0], size[1], yaw, z, z + height,
+                        textureOf(section, "texture")));
+  }
+
+  void addCylinder(IniSection& section) {
+    acceptOnly(section, {"center", "radius", "z", "height", "texture"});
+    const auto center = numbers(section, "center", 2);
+    const double radius = positive(section, "radius", 0.1);
+    const double z = nonNegative(section, "z", 0.0);
+    const double height = positive(section, "height", 1.0);
+    addSolid(Solid::cylinder(center[0], center[1], radius, z, z + height, textureOf(section, "texture")));
+  }
+
+  void addTable(IniSection& section) {
+    acceptOnly(section, {"center", "size", "yaw_deg", "height", "top_thickness", "leg_radius", "leg_inset",
+                         "texture", "leg_texture"});
+    const auto center = numbers(section, "center", 2);
+    const auto size = numbers(section, "size", 2);
+    if (!(size[0] > 0.0 && size[1] > 0.0)) fail(section, "size", "must be positive");
+    const double yaw = mrpt::DEG2RAD(section.getDouble("yaw_deg", 0.0));
+    const double height = positive(section, "height", 0.72);
+    const double top_thickness = positive(section, "top_thickness", 0.03);
+    const double leg_radius = positive(section, "leg_radius", 0.02);
+    const double leg_inset = nonNegative(section, "leg_inset", 0.05);
+    const int texture = textureOf(section, "texture");
+    const int leg_texture = section.has("leg_texture") ? textureOf(section, "leg_texture") : texture;
+    if (top_thickness >= height) fail(section, "top_thickness", "must be less than height");
+    if (leg_inset + leg_radius > std::min(size[0], size[1]) / 2) {
+      fail(section, "leg_inset", "legs would stand outside the top");
+    }
+    const double bottom = height - top_thickness;
+    addSolid(Solid::box(center[0], center[1], size[0], size[1], yaw, bottom, height, texture));
+    const double leg_x = size[0] / 2 - leg_inset - leg_radius;
+    const double leg_y = size[1] / 2 - leg_inset - leg_radius;
+    for (int sx : {-1, 1}) {
+      for (int sy : {-1, 1}) {
+        const double lx = sx * leg_x;
+        const double ly = sy * leg_y;
+        addSolid(Solid::cylinder(center[0] + std::cos(yaw) * lx - std::sin(yaw) * ly,
+                                 center[1] + std::sin(yaw) * lx + std::cos(yaw) * ly, leg_radius,
+                                 0.0, bottom, leg_texture));
+      }
+    }
+  }
+
+  void addPicketFence(IniSection& section) {
+    acceptOnly(section, {"from", "to", "picket_width", "gap", "height", "thickness", "rail_size",
+                         "rail_heights", "texture"});
+    const auto from = numbers(section, "from", 2);
+    const auto to = numbers(section, "to", 2);
+    const double width = positive(section, "picket_width", 0.05);
+    const double gap = positive(section, "gap", 0.07);
+    const double height = positive(section, "height", 1.0);
+    const double thickness = positive(section, "thickness", 0.02);
+    const double rail_size = positive(section, "rail_size", 0.05);
+    const std::vector<double> rails =
+        parseNumberList(section.getString("rail_heights", ""), where(section, "rail_heights"));
+    const int texture = textureOf(section, "texture");
+    const double length = std::hypot(to[0] - from[0], to[1] - from[1]);
+    if (length < width) fail(section, "to", "the fence is shorter than one picket");
+    const double ux = (to[0] - from[0]) / length;
+    const double uy = (to[1] - from[1]) / length;
+    const double yaw = std::atan2(uy, ux);
+    const int pickets = static_cast<int>(std::floor((length + gap) / (width + gap)));
+    for (int i = 0; i < pickets; ++i) {
+      const double s = width / 2 + i * (width + gap);
+      addSolid(Solid::box(from[0] + ux * s, from[1] + uy * s, width, thickness, yaw, 0.0, height, texture),
+               true);
+    }
+    for (double rail : rails) {
+      if (rail - rail_size / 2 < 0.0 || rail + rail_size / 2 > height) {
+        fail(section, "rail_heights", "rails must lie within the fence's height");
+      }
+      // Rails sit behind the pickets (on the side of the fence's left normal).
+      const double behind = thickness;
+      addSolid(Solid::box((from[0] + to[0]) / 2 - uy * behind, (from[1] + to[1]) / 2 + ux * behind, length,
+                          thickness, yaw, rail - rail_size / 2, rail + rail_size / 2, texture));
+    }
+  }
+
+  void addMovingObstacle(IniSection& section) {
+    acceptOnly(section, {"shape", "radius", "size", "yaw_deg", "height", "path", "speed", "texture"});
+    MovingObstacle obstacle;
+    obstacle.path = points(section, "path", 1);
+    obstacle.speed_mps = nonNegative(section, "speed", 0.5);
+    const std::string shape = section.getString("shape", "cylinder");
+    const double height = positive(section, "height", 1.7);
+    const int texture = textureOf(section, "texture");
+    const Point2& start = obstacle.path.front();
+    if (shape == "box") {
+      const auto size = numbers(section, "size", 2);
+      if (!(size[0] > 0.0 && size[1] > 0.0)) fail(section, "size", "must be positive");
+      obstacle.solid = Solid::box(start.x, start.y, size[0], size[1],
+                                  mrpt::DEG2RAD(section.getDouble("yaw_deg", 0.0)), 0.0, height, texture);
+    } else if (shape == "cylinder") {
+      obstacle.solid = Solid::cylinder(start.x, start.y, positive(section, "radius", 0.25), 0.0, height, texture);
+    } else {
+      fail(section, "shape", "expected box or cylinder, got '" + shape + "'");
+    }
+    obstacle.solid.texture_offset = 53.7 * static_cast<double>(world_.moving_obstacles.size() + 1);
+    world_.moving_obstacles.push_back(obstacle);
+  }
+
+  void computeBounds() {
+    bool first = true;
+    FloorExtent all{0.0, 0.0, 0.0, 0.0};
+    const auto include = [&](const FloorExtent& e) {
+      all = first ? e
+                  : FloorExtent{std::min(all.x_min, e.x_min), std::min(all.y_min, e.y_min),
+                                std::max(all.x_max, e.x_max), std::max(all.y_max, e.y_max)};
+      first = false;
+    };
+    for (const auto& solid : world_.solids) include(solid.floorExtent());
+    for (const auto& obstacle : world_.moving_obstacles) {
+      for (const auto& point : obstacle.path) {
+        Solid placed = obstacle.solid;
+        placed.x = point.x;
+        placed.y = point.y;
+        include(placed.floorExtent());
+      }
+    }
+    include({world_.start_pose[0], world_.start_pose[1], world_.start_pose[0], world_.start_pose[1]});
+    world_.bounds[0] = all.x_min;
+    world_.bounds[1] = all.y_min;
+    world_.bounds[2] = all.x_max;
+    world_.bounds[3] = all.y_max;
+  }
+
+  const mrpt::config::CConfigFileBase& config_;
+  World world_;
+  std::map<std::string, int> texture_index_;
+  std::vector<bool> identical_texture_;
+  double wall_thickness_ = 0.1;
+  bool explicit_bounds_ = false;
+};
+
+}  // namespace
+
+World loadWorld(const mrpt::config::CConfigFileBase& config, const std::string& file_name) {
+  try {
+    return WorldBuilder(config).build();
+  } catch (const ConfigError& error) {
+    throw ConfigError(file_name + ": " + error.what());
+  }
+}
+
+World loadWorld(const std::string& path) {
+  if (!std::ifstream(path)) throw ConfigError(path + ": cannot open the world file");
+  const mrpt::config::CConfigFile config(path);
+  return loadWorld(config, path);
+}
+
+}  // namespace stereonav

@@ -1,0 +1,139 @@
+#include "simulator/ray_intersection.h"
+
+#include <gtest/gtest.h>
+#include <mrpt/core/bits_math.h>
+
+#include <cmath>
+#include <random>
+
+#include "simulator/ray_caster.h"
+#include "world_text.h"
+
+namespace stereonav {
+namespace {
+
+Ray rayFrom(double ox, double oy, double oz, double dx, double dy, double dz) {
+  return {Eigen::Vector3d(ox, oy, oz), Eigen::Vector3d(dx, dy, dz)};
+}
+
+TEST(RayIntersection, AxisAlignedBoxIsEnteredThroughTheNearFace) {
+  const Solid box = Solid::box(5.0, 0.0, 2.0, 2.0, 0.0, 0.0, 1.0, 0);
+  int face = -1;
+  const Ray ray = rayFrom(0.0, 0.0, 0.5, 1.0, 0.0, 0.0);
+  EXPECT_DOUBLE_EQ(intersectSolid(box, ray, kNoHit, &face), 4.0);
+  EXPECT_EQ(face, kFaceMinusX);
+  const SurfacePoint point = surfaceOfSolid(box, face, ray, 4.0);
+  EXPECT_NEAR((point.normal - Eigen::Vector3d(-1, 0, 0)).norm(), 0.0, 1e-12);
+  EXPECT_NEAR((point.position - Eigen::Vector3d(4, 0, 0.5)).norm(), 0.0, 1e-12);
+  EXPECT_DOUBLE_EQ(point.v, 0.5);  // side faces: v is the height
+}
+
+TEST(RayIntersection, RotatedBoxCornerAtHalfDiagonal) {
+  // A 2 x 2 box turned by 45 degrees has a corner at x = -sqrt(2) on the x axis.
+  const Solid box = Solid::box(0.0, 0.0, 2.0, 2.0, mrpt::DEG2RAD(45.0), 0.0, 1.0, 0);
+  int face = -1;
+  EXPECT_NEAR(intersectSolid(box, rayFrom(-5.0, 0.0, 0.5, 1.0, 0.0, 0.0), kNoHit, &face),
+              5.0 - std::sqrt(2.0), 1e-12);
+  // Through the middle of a face: at 45 degrees the face's centre is at distance 1 along (1, 1).
+  const double t = intersectSolid(box, rayFrom(-3.0, -3.0, 0.5, 1.0, 1.0, 0.0), kNoHit, &face);
+  EXPECT_NEAR(t, 3.0 - 1.0 / std::sqrt(2.0), 1e-12);
+}
+
+TEST(RayIntersection, BoxTopSeenFromAboveAndMissedOverTheTop) {
+  const Solid box = Solid::box(5.0, 0.0, 2.0, 2.0, 0.0, 0.0, 1.0, 0);
+  int face = -1;
+  EXPECT_DOUBLE_EQ(intersectSolid(box, rayFrom(5.0, 0.5, 3.0, 0.0, 0.0, -1.0), kNoHit, &face), 2.0);
+  EXPECT_EQ(face, kFaceTop);
+  EXPECT_EQ(intersectSolid(box, rayFrom(0.0, 0.0, 1.5, 1.0, 0.0, 0.0), kNoHit, &face), kNoHit);
+  // Descending at 1:10 from z = 1.5 the ray is at z = 1.1 over the near face (x = 4) and
+  // reaches the top (z = 1) at x = 5.
+  EXPECT_NEAR(intersectSolid(box, rayFrom(0.0, 0.0, 1.5, 1.0, 0.0, -0.1), kNoHit, &face), 5.0, 1e-12);
+  EXPECT_EQ(face, kFaceTop);
+}
+
+TEST(RayIntersection, NoHitFromInsideOrBeyondTheLimit) {
+  const Solid box = Solid::box(5.0, 0.0, 2.0, 2.0, 0.0, 0.0, 1.0, 0);
+  int face = -1;
+  EXPECT_EQ(intersectSolid(box, rayFrom(5.0, 0.0, 0.5, 1.0, 0.0, 0.0), kNoHit, &face), kNoHit);
+  EXPECT_EQ(intersectSolid(box, rayFrom(0.0, 0.0, 0.5, 1.0, 0.0, 0.0), 3.9, &face), kNoHit);
+  EXPECT_EQ(intersectSolid(box, rayFrom(0.0, 0.0, 0.5, -1.0, 0.0, 0.0), kNoHit, &face), kNoHit);
+}
+
+TEST(RayIntersection, CylinderSideAndCap) {
+  const Solid pole = Solid::cylinder(3.0, 4.0, 1.0, 0.0, 2.0, 0);
+  int face = -1;
+  // Straight at the axis from 5 m away: the surface is one radius nearer.
+  const Ray ray = rayFrom(0.0, 0.0, 1.0, 0.6, 0.8, 0.0);
+  EXPECT_NEAR(intersectSolid(pole, ray, kNoHit, &face), 4.0, 1e-12);
+  const SurfacePoint point = surfaceOfSolid(pole, face, ray, 4.0);
+  EXPECT_NEAR((point.normal - Eigen::Vector3d(-0.6, -0.8, 0.0)).norm(), 0.0, 1e-12);
+  // A ray grazing past at distance 1.5 from the axis misses.
+  EXPECT_EQ(intersectSolid(pole, rayFrom(0.0, 5.5, 1.0, 1.0, 0.0, 0.0), kNoHit, &face), kNoHit);
+  // Offset by half a radius: enters at x = 3 - sqrt(1 - 0.25).
+  EXPECT_NEAR(intersectSolid(pole, rayFrom(0.0, 4.5, 1.0, 1.0, 0.0, 0.0), kNoHit, &face),
+              3.0 - std::sqrt(0.75), 1e-12);
+  // Above the top: misses the side, hits the cap from above.
+  EXPECT_EQ(intersectSolid(pole, rayFrom(0.0, 4.0, 2.5, 1.0, 0.0, 0.0), kNoHit, &face), kNoHit);
+  EXPECT_DOUBLE_EQ(intersectSolid(pole, rayFrom(3.2, 4.0, 5.0, 0.0, 0.0, -1.0), kNoHit, &face), 3.0);
+  EXPECT_EQ(face, kFaceTop);
+}
+
+TEST(RayCaster, WallFaceIsHalfAThicknessBeforeItsCentreLine) {
+  const World world = worldFromText(
+      "[wall.north]\npoints = -5 2; 5 2\nheight = 2.5\nthickness = 0.1\n");
+  RayCaster caster(world);
+  const RayHit hit = caster.cast(rayFrom(1.0, 0.0, 1.0, 0.0, 1.0, 0.0));
+  EXPECT_NEAR(hit.t, 1.95, 1e-12);
+  EXPECT_NEAR(hit.surface.normal.y(), -1.0, 1e-12);
+  // Over the top of the wall there is nothing (no ceiling).
+  EXPECT_EQ(caster.cast(rayFrom(1.0, 0.0, 1.0, 0.0, 1.0, 1.0)).t, kNoHit);
+  // Looking down hits the floor.
+  EXPECT_NEAR(caster.cast(rayFrom(1.0, 0.0, 1.0, 0.0, 1.0, -1.0)).t, 1.0, 1e-12);
+}
+
+TEST(RayCaster, TableTopIsHitFromTheSideAndFromBelowAndTheRayPassesUnderIt) {
+  // Top 1.2 x 0.8 at (2, 0), surface at 0.72, 0.03 thick: underside at 0.69, near edge x = 1.4.
+  const World world = worldFromText(
+      "[table.t]\ncenter = 2 0\nsize = 1.2 0.8\nheight = 0.72\ntop_thickness = 0.03\n"
+      "[wall.back]\npoints = 5 -3; 5 3\n");
+  RayCaster caster(world);
+  // Level through the slab: the edge.
+  RayHit hit = caster.cast(rayFrom(0.0, 0.0, 0.705, 1.0, 0.0, 0.0));
+  EXPECT_NEAR(hit.t, 1.4, 1e-12);
+  // Rising 1:10 from 0.5: under the near edge at x = 1.4 (z = 0.64), reaches 0.69 at x = 1.9.
+  hit = caster.cast(rayFrom(0.0, 0.0, 0.5, 1.0, 0.0, 0.1));
+  EXPECT_NEAR(hit.t, 1.9, 1e-12);
+  EXPECT_NEAR(hit.surface.normal.z(), -1.0, 1e-12);
+  // Level at 0.3 between the legs: under the table to the wall's face at 4.95.
+  hit = caster.cast(rayFrom(0.0, 0.0, 0.3, 1.0, 0.0, 0.0));
+  EXPECT_NEAR(hit.t, 4.95, 1e-12);
+  // Through a leg: legs stand 0.05 + 0.02 in from the corners, at (2 - 0.53, 0.33).
+  hit = caster.cast(rayFrom(0.0, 0.33, 0.3, 1.0, 0.0, 0.0));
+  EXPECT_NEAR(hit.t, 2.0 - 0.53 - 0.02, 1e-12);
+}
+
+TEST(RayCaster, GridTraversalFindsTheSameHitsAsTestingEverySolid) {
+  const World world = loadWorld(worldsDirectory() + "/office.ini");
+  RayCaster caster(world);
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> x_position(world.bounds[0], world.bounds[2]);
+  std::uniform_real_distribution<double> y_position(world.bounds[1], world.bounds[3]);
+  std::uniform_real_distribution<double> direction(-1.0, 1.0);
+  std::uniform_real_distribution<double> height(0.1, 2.0);
+  for (int i = 0; i < 20000; ++i) {
+    const Ray ray = rayFrom(x_position(random), y_position(random), height(random), direction(random),
+                            direction(random), 0.3 * direction(random));
+    double nearest = intersectHorizontalPlane(0.0, ray, kNoHit);
+    if (world.ceiling_height > 0.0) {
+      nearest = std::min(nearest, intersectHorizontalPlane(world.ceiling_height, ray, kNoHit));
+    }
+    for (const auto& solid : world.solidsAt(0.0)) {
+      int face = 0;
+      nearest = std::min(nearest, intersectSolid(solid, ray, kNoHit, &face));
+    }
+    ASSERT_EQ(caster.cast(ray).t, nearest) << "ray " << i;
+  }
+}
+
+}  // namespace
+}  // namespace stereonav
