@@ -22,6 +22,8 @@ namespace stereonav {
 //    exactly; a ray is off its obstacle's bearing by at most half a pixel.
 //  - Rays that meet no obstacle, or only obstacles beyond max_range_m, are invalid (range =
 //    maxRange).
+// When inserting into a COccupancyGridMap2D, set insertionOptions.considerInvalidRangesAsFreeSpace
+// = false: an invalid ray means the matcher found nothing, not that nothing is there.
 // The caller sets the timestamp and sensorLabel. Requires scan.column_row (ColumnProjector output)
 // and the rig's image width; throws std::invalid_argument otherwise.
 mrpt::obs::CObservation2DRangeScan makeVirtualRangeScan(const DisparityScan& scan,

@@ -1,6 +1,7 @@
 #include "column_projection/virtual_range_scan.h"
 
 #include <gtest/gtest.h>
+#include <mrpt/maps/COccupancyGridMap2D.h>
 
 #include <cmath>
 #include <stdexcept>
@@ -102,6 +103,21 @@ TEST(VirtualRangeScanTest, TiltedCameraRaysEndOnTheBoxFaceWithoutGaps) {
   EXPECT_NEAR((last - first) * scan.aperture / (scan.getScanSize() - 1), 22.6 * kDegree,
               2.0 * kDegree);
   for (size_t i = first; i <= last; ++i) EXPECT_TRUE(scan.getScanRangeValidity(i)) << "ray " << i;
+}
+
+TEST(VirtualRangeScanTest, StockMrptGridMapsTheWallAndTheFreeSpaceBeforeIt) {
+  const auto scan = levelCorridorScan(10.0);
+  mrpt::maps::COccupancyGridMap2D grid(-3.0f, 3.0f, -3.0f, 3.0f, 0.05f);
+  // A column without an obstacle means "nothing matched", not "nothing there".
+  grid.insertionOptions.considerInvalidRangesAsFreeSpace = false;
+  for (int i = 0; i < 5; ++i) ASSERT_TRUE(grid.insertObservation(scan, mrpt::poses::CPose3D()));
+  // MRPT grid cells hold the probability of being free.
+  EXPECT_LT(grid.getPos(2.02f, 0.0f), 0.4f);  // the wall, 2 m ahead
+  EXPECT_GT(grid.getPos(1.0f, 0.0f), 0.6f);   // seen through
+  // The box face, 1.25 m ahead, 0.6875 m to the right (ray 36, column 155); the ray ends
+  // 1.249 m ahead, in the cell just short of 1.25.
+  EXPECT_LT(grid.getPos(1.24f, -0.69f), 0.4f);
+  EXPECT_NEAR(grid.getPos(-1.0f, 0.0f), 0.5f, 0.01f);  // behind the camera: unknown
 }
 
 TEST(VirtualRangeScanTest, RejectsScanWithoutRows) {
