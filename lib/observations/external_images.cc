@@ -1,8 +1,7 @@
 #include "observations/external_images.h"
 
-#include <opencv2/imgcodecs.hpp>
-
 #include <filesystem>
+#include <opencv2/imgcodecs.hpp>
 #include <stdexcept>
 
 #include "common/atomic_file.h"

@@ -3,7 +3,6 @@
 #include <mrpt/img/CImage.h>
 
 #include <opencv2/core.hpp>
-
 #include <string>
 
 namespace stereonav {

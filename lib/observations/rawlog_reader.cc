@@ -14,16 +14,16 @@
 namespace stereonav {
 namespace {
 
-constexpr const char* kReasonNames[] = {"without calibration", "wrong image format",
-                                        "not rectified", "image missing",
-                                        "wrong number of cameras"};
+constexpr const char* kReasonNames[kRejectReasonCount] = {
+    "without calibration", "wrong image format", "not rectified", "image missing",
+    "wrong number of cameras"};
 
 // The camera index k of "<pair_label>_CAM<k>", or 0 if `label` is not of that form.
 size_t extraCameraIndex(const std::string& label, const std::string& pair_label) {
   const std::string prefix = pair_label + "_CAM";
   if (label.size() <= prefix.size() || label.compare(0, prefix.size(), prefix) != 0) return 0;
   const std::string digits = label.substr(prefix.size());
-  if (digits.find_first_not_of("0123456789") != std::string::npos) return 0;
+  if (digits.size() > 3 || digits.find_first_not_of("0123456789") != std::string::npos) return 0;
   return std::stoul(digits);
 }
 
@@ -60,11 +60,13 @@ RawlogReader::RawlogReader(const std::string& path, RawlogReaderOptions options)
       options_(std::move(options)),
       archive_(stream_) {
   // CFileGZInputStream throws a multi-line MRPT report for a missing file; say it in one line.
-  if (!std::filesystem::is_regular_file(path_)) throw std::runtime_error(path_ + ": no such rawlog file");
+  if (!std::filesystem::is_regular_file(path_))
+    throw std::runtime_error(path_ + ": no such rawlog file");
   bool opened = false;
   try {
     opened = stream_.open(path_);
   } catch (const std::exception&) {
+    // reported below, without MRPT's backtrace
   }
   if (!opened) throw std::runtime_error(path_ + ": cannot open rawlog");
 }
@@ -116,8 +118,14 @@ std::optional<RigFrame> RawlogReader::handleObject(
 
 void RawlogReader::collect(const mrpt::obs::CObservation::Ptr& observation) {
   if (auto image = std::dynamic_pointer_cast<mrpt::obs::CObservationImage>(observation)) {
+    // A frame's cameras share its timestamp, so older ones can no longer be completed; dropping
+    // them keeps memory bounded in logs full of other cameras' images.
+    if (!pending_images_.empty() && pending_images_.front()->timestamp != image->timestamp) {
+      pending_images_.clear();
+    }
     pending_images_.push_back(image);
-  } else if (auto odometry = std::dynamic_pointer_cast<mrpt::obs::CObservationOdometry>(observation)) {
+  } else if (auto odometry =
+                 std::dynamic_pointer_cast<mrpt::obs::CObservationOdometry>(observation)) {
     pending_odometry_ = odometry->odometry;
   }
 }
@@ -125,14 +133,16 @@ void RawlogReader::collect(const mrpt::obs::CObservation::Ptr& observation) {
 void RawlogReader::integrateMovement(const mrpt::obs::CActionCollection& actions) {
   pending_odometry_.reset();
   for (const auto& action : actions) {
-    if (auto movement = std::dynamic_pointer_cast<mrpt::obs::CActionRobotMovement2D>(action.get_ptr())) {
+    if (auto movement =
+            std::dynamic_pointer_cast<mrpt::obs::CActionRobotMovement2D>(action.get_ptr())) {
       integrated_movement_ = integrated_movement_ + movement->poseChange->getMeanVal();
       pending_odometry_ = integrated_movement_;
     }
   }
 }
 
-std::optional<RigFrame> RawlogReader::completeFrame(const mrpt::obs::CObservationStereoImages& pair) {
+std::optional<RigFrame> RawlogReader::completeFrame(
+    const mrpt::obs::CObservationStereoImages& pair) {
   if (options_.sensor_label.empty()) options_.sensor_label = pair.sensorLabel;
   if (pair.sensorLabel != options_.sensor_label) return std::nullopt;
 
@@ -163,20 +173,19 @@ std::optional<RigFrame> RawlogReader::completeFrame(const mrpt::obs::CObservatio
     RigFrame frame = fromRigObservations(pair, extra_cameras, images_directory_, unnamed_reference);
     if (expected) {
       if (frame.rig.secondaries.size() != expected->secondaries.size()) {
-        throw ObservationRejected(RejectReason::kWrongCameraCount,
-                                  pair.sensorLabel + ": " +
-                                      std::to_string(frame.rig.secondaries.size() + 1) +
-                                      " cameras, expected " +
-                                      std::to_string(expected->secondaries.size() + 1));
+        throw ObservationRejected(
+            RejectReason::kWrongCameraCount,
+            pair.sensorLabel + ": " + std::to_string(frame.rig.secondaries.size() + 1) +
+                " cameras, expected " + std::to_string(expected->secondaries.size() + 1));
       }
       if (frame.rig.reference.width != expected->reference.width ||
           frame.rig.reference.height != expected->reference.height) {
-        throw ObservationRejected(
-            RejectReason::kWrongImageFormat,
-            pair.sensorLabel + ": images are " + std::to_string(frame.rig.reference.width) + "x" +
-                std::to_string(frame.rig.reference.height) + ", expected " +
-                std::to_string(expected->reference.width) + "x" +
-                std::to_string(expected->reference.height));
+        throw ObservationRejected(RejectReason::kWrongImageFormat,
+                                  pair.sensorLabel + ": images are " +
+                                      std::to_string(frame.rig.reference.width) + "x" +
+                                      std::to_string(frame.rig.reference.height) + ", expected " +
+                                      std::to_string(expected->reference.width) + "x" +
+                                      std::to_string(expected->reference.height));
       }
     } else {
       options_.expected_rig = frame.rig;

@@ -39,8 +39,8 @@ struct RawlogDamage {
 
 // Stereo frames the reader could not use, by reason, for one summary at the end of a run.
 struct SkippedFrames {
-  std::array<size_t, 5> count{};             // indexed by RejectReason
-  std::array<std::string, 5> first_message;  // the first rejection of each reason, for the user
+  std::array<size_t, kRejectReasonCount> count{};             // indexed by RejectReason
+  std::array<std::string, kRejectReasonCount> first_message;  // the first of each, for the user
 
   size_t total() const;
   // E.g. "skipped 2 of the rawlog's stereo frames: 2 wrong image format (TRICLOPS left: image is
@@ -75,7 +75,6 @@ class RawlogReader {
 
   const std::optional<RawlogDamage>& damage() const { return damage_; }
   const SkippedFrames& skipped() const { return skipped_; }
-  const std::string& imagesDirectory() const { return images_directory_; }
 
  private:
   // Returns the frame completed by `pair`, if it is ours and usable.
@@ -96,7 +95,8 @@ class RawlogReader {
   std::optional<RawlogDamage> damage_;
   SkippedFrames skipped_;
 
-  // What has arrived since the last frame.
+  // What has arrived since the last frame: the extra cameras of the newest timestamp seen, and
+  // the odometry.
   std::vector<mrpt::obs::CObservationImage::Ptr> pending_images_;
   std::optional<mrpt::poses::CPose2D> pending_odometry_;
   mrpt::poses::CPose2D integrated_movement_;  // sum of CActionRobotMovement2D so far

@@ -24,9 +24,8 @@ namespace {
 // same naming as writeFileAtomically so one pattern of leftovers exists after a crash.
 std::string temporaryPathFor(const std::string& path) {
   const std::filesystem::path target(path);
-  return (target.parent_path() /
-          (target.stem().string() + ".tmp" + std::to_string(::getpid()) +
-           target.extension().string()))
+  return (target.parent_path() / (target.stem().string() + ".tmp" + std::to_string(::getpid()) +
+                                  target.extension().string()))
       .string();
 }
 
@@ -76,7 +75,8 @@ RawlogWriter::RawlogWriter(std::string path, RawlogWriterOptions options)
   if (options_.image_storage == ImageStorage::kExternal) {
     std::error_code error;
     std::filesystem::create_directories(images_directory_, error);
-    if (error) throw std::runtime_error(images_directory_ + ": cannot create (" + error.message() + ")");
+    if (error)
+      throw std::runtime_error(images_directory_ + ": cannot create (" + error.message() + ")");
   }
   if (options_.compression_level == 0) {
     auto plain = std::make_unique<mrpt::io::CFileOutputStream>();

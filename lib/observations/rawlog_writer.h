@@ -11,7 +11,8 @@
 
 namespace stereonav {
 
-// The two rawlog formats MRPT tools read (https://docs.mrpt.org/reference/latest/robotics_file_formats.html):
+// The two rawlog formats MRPT tools read
+// (https://docs.mrpt.org/reference/latest/robotics_file_formats.html):
 enum class RawlogLayout {
   // A flat sequence of observations; odometry as CObservationOdometry (absolute pose) before
   // the frame's camera observations.
@@ -31,7 +32,7 @@ enum class ImageStorage {
 struct RawlogWriterOptions {
   RawlogLayout layout = RawlogLayout::kObservations;
   ImageStorage image_storage = ImageStorage::kEmbedded;
-  int compression_level = 1;  // gzip level 1-9; 0 writes a plain, uncompressed rawlog
+  int compression_level = 1;              // gzip level 1-9; 0 writes a plain, uncompressed rawlog
   std::string sensor_label = "TRICLOPS";  // see rig_observations.h for the labels derived from it
 };
 

@@ -10,13 +10,14 @@ void checkRigFrame(const RigFrame& frame) {
   if (frame.secondaries.size() != frame.rig.secondaries.size()) {
     throw std::invalid_argument("rig frame: " + std::to_string(frame.secondaries.size()) +
                                 " secondary images for a rig with " +
-                                std::to_string(frame.rig.secondaries.size()) + " secondary cameras");
+                                std::to_string(frame.rig.secondaries.size()) +
+                                " secondary cameras");
   }
   const auto check = [&](const cv::Mat& image, const std::string& which) {
     if (image.cols != camera.width || image.rows != camera.height) {
-      throw std::invalid_argument("rig frame: " + which + " image is " + std::to_string(image.cols) +
-                                  "x" + std::to_string(image.rows) + ", the rig's camera is " +
-                                  std::to_string(camera.width) + "x" +
+      throw std::invalid_argument("rig frame: " + which + " image is " +
+                                  std::to_string(image.cols) + "x" + std::to_string(image.rows) +
+                                  ", the rig's camera is " + std::to_string(camera.width) + "x" +
                                   std::to_string(camera.height));
     }
     if (image.depth() != CV_8U || (image.channels() != 1 && image.channels() != 3) ||

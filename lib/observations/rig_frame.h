@@ -4,7 +4,6 @@
 #include <mrpt/system/datetime.h>
 
 #include <opencv2/core.hpp>
-
 #include <optional>
 #include <vector>
 
@@ -17,8 +16,8 @@ namespace stereonav {
 // them, and where odometry placed the robot at that instant, if it was recorded.
 struct RigFrame {
   mrpt::system::TTimeStamp timestamp;
-  cv::Mat reference;                // 8-bit grey or BGR, rig.reference.width x height
-  std::vector<cv::Mat> secondaries; // same size and type, in rig.secondaries order
+  cv::Mat reference;                 // 8-bit grey or BGR, rig.reference.width x height
+  std::vector<cv::Mat> secondaries;  // same size and type, in rig.secondaries order
   CameraRig rig;
   // Absolute odometry pose of the robot (x forward, y left), as the robot's own dead reckoning
   // reports it; absent when the robot gave none for this capture.

@@ -47,7 +47,8 @@ void requireCalibration(const TCamera& camera, const std::string& which) {
 }
 
 // All cameras of a rectified rig share the reference's pinhole intrinsics and have no distortion.
-void requireRectifiedLike(const TCamera& camera, const TCamera& reference, const std::string& which) {
+void requireRectifiedLike(const TCamera& camera, const TCamera& reference,
+                          const std::string& which) {
   bool distorted = false;
   for (const double k : camera.dist) distorted = distorted || k != 0.0;
   const auto near = [](double a, double b) { return std::abs(a - b) <= kGeometryTolerance; };
@@ -55,8 +56,9 @@ void requireRectifiedLike(const TCamera& camera, const TCamera& reference, const
       !near(camera.cx(), reference.cx()) || !near(camera.cy(), reference.cy()) ||
       camera.ncols != reference.ncols || camera.nrows != reference.nrows) {
     throw ObservationRejected(RejectReason::kNotRectified,
-                              which + ": not a rectified camera (distortion, non-square pixels or "
-                                      "intrinsics differing from the reference camera)");
+                              which +
+                                  ": not a rectified camera (distortion, non-square pixels or "
+                                  "intrinsics differing from the reference camera)");
   }
 }
 
@@ -64,18 +66,19 @@ cv::Mat loadImage(const CImage& image, const TCamera& camera, const std::string&
                   const std::string& which) {
   cv::Mat pixels = imagePixels(image, images_directory);
   if (pixels.empty()) {
-    throw ObservationRejected(RejectReason::kMissingImage,
-                              which + ": image missing (" +
-                                  (image.isExternallyStored()
-                                       ? images_directory + "/" + image.getExternalStorageFile()
-                                       : std::string("empty embedded image")) +
-                                  ")");
+    throw ObservationRejected(
+        RejectReason::kMissingImage,
+        which + ": image missing (" +
+            (image.isExternallyStored() ? images_directory + "/" + image.getExternalStorageFile()
+                                        : std::string("empty embedded image")) +
+            ")");
   }
-  if (pixels.cols != static_cast<int>(camera.ncols) || pixels.rows != static_cast<int>(camera.nrows)) {
-    throw ObservationRejected(RejectReason::kWrongImageFormat,
-                              which + ": image is " + std::to_string(pixels.cols) + "x" +
-                                  std::to_string(pixels.rows) + ", its camera is " +
-                                  std::to_string(camera.ncols) + "x" + std::to_string(camera.nrows));
+  if (pixels.cols != static_cast<int>(camera.ncols) ||
+      pixels.rows != static_cast<int>(camera.nrows)) {
+    throw ObservationRejected(
+        RejectReason::kWrongImageFormat,
+        which + ": image is " + std::to_string(pixels.cols) + "x" + std::to_string(pixels.rows) +
+            ", its camera is " + std::to_string(camera.ncols) + "x" + std::to_string(camera.nrows));
   }
   return pixels;
 }
@@ -127,9 +130,9 @@ RigObservations toRigObservations(const RigFrame& frame, const std::string& pair
   pair.imageRight = reference_is_left ? partner_image : reference_image;
   pair.hasImageRight = true;
   pair.hasImageDisparity = false;
-  pair.cameraPose = CPose3DQuat(reference_is_left ? rig.pose_on_robot : secondaryPose(rig, partner));
-  pair.rightCameraPose =
-      CPose3DQuat(CPose3D(std::abs(partner.bx) * rig.baseline_m, 0, 0, 0, 0, 0));
+  pair.cameraPose =
+      CPose3DQuat(reference_is_left ? rig.pose_on_robot : secondaryPose(rig, partner));
+  pair.rightCameraPose = CPose3DQuat(CPose3D(std::abs(partner.bx) * rig.baseline_m, 0, 0, 0, 0, 0));
 
   for (size_t i = 1; i < rig.secondaries.size(); ++i) {
     auto extra = mrpt::obs::CObservationImage::Create();
@@ -184,7 +187,8 @@ RigFrame fromRigObservations(const mrpt::obs::CObservationStereoImages& pair,
   rig.pose_on_robot = reference_is_left ? left_pose : right_pose;
   rig.secondaries = {SecondaryCamera{reference_is_left ? 1.0 : -1.0, 0.0}};
 
-  const cv::Mat left = loadImage(pair.imageLeft, pair.leftCamera, images_directory, label + " left");
+  const cv::Mat left =
+      loadImage(pair.imageLeft, pair.leftCamera, images_directory, label + " left");
   const cv::Mat right =
       loadImage(pair.imageRight, pair.rightCamera, images_directory, label + " right");
   frame.reference = reference_is_left ? left : right;
@@ -196,7 +200,8 @@ RigFrame fromRigObservations(const mrpt::obs::CObservationStereoImages& pair,
     requireRectifiedLike(extra->cameraParams, reference, which);
     const auto offset = coplanarOffset(rig.pose_on_robot, extra->cameraPose, which);
     rig.secondaries.push_back({offset.x / baseline, offset.y / baseline});
-    frame.secondaries.push_back(loadImage(extra->image, extra->cameraParams, images_directory, which));
+    frame.secondaries.push_back(
+        loadImage(extra->image, extra->cameraParams, images_directory, which));
   }
   try {
     checkRigFrame(frame);

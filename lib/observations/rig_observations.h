@@ -50,6 +50,7 @@ enum class RejectReason {
   kMissingImage,        // an externally stored image whose file cannot be read
   kWrongCameraCount,    // not the number of cameras the caller expects
 };
+constexpr size_t kRejectReasonCount = 5;
 
 class ObservationRejected : public std::runtime_error {
  public:

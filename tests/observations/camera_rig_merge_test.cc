@@ -32,9 +32,9 @@ TEST(CameraRigMergeTest, OneSourceIsTakenAsItIs) {
 TEST(CameraRigMergeTest, AgreementWithinToleranceIsSilent) {
   const CameraRig ini = triclopsRig();
   CameraRig observed = ini;
-  observed.reference.focal_px += 0.3;   // tolerance 0.5 px
-  observed.reference.cx -= 0.4;         // tolerance 0.5 px
-  observed.baseline_m += 0.0005;        // tolerance 1 mm
+  observed.reference.focal_px += 0.3;  // tolerance 0.5 px
+  observed.reference.cx -= 0.4;        // tolerance 0.5 px
+  observed.baseline_m += 0.0005;       // tolerance 1 mm
   observed.pose_on_robot = observed.pose_on_robot + mrpt::poses::CPose3D(0.005, 0, 0, 0, 0, 0);
   const auto merged = mergeCameraRigs(ini, observed, {});
   EXPECT_TRUE(merged.warnings.empty()) << merged.warnings[0];
@@ -58,7 +58,8 @@ TEST(CameraRigMergeTest, IniWinsAndEachMismatchIsReported) {
   EXPECT_TRUE(mentions(merged.warnings, "secondary camera 0 offset x"));  // 0.10 vs 0.12 m
   EXPECT_TRUE(mentions(merged.warnings, "secondary camera 1 offset y"));
   EXPECT_TRUE(mentions(merged.warnings, "camera position on the robot"));
-  EXPECT_TRUE(mentions(merged.warnings, "camera orientation on the robot: ini and rawlog differ by 3"));
+  EXPECT_TRUE(
+      mentions(merged.warnings, "camera orientation on the robot: ini and rawlog differ by 3"));
   EXPECT_EQ(merged.warnings.size(), 7u);
   for (const auto& warning : merged.warnings) {
     EXPECT_NE(warning.find("using the ini value"), std::string::npos) << warning;
@@ -76,7 +77,8 @@ TEST(CameraRigMergeTest, DifferentCamerasAreReported) {
 
 TEST(CameraRigMergeTest, TolerancesLoadFromIni) {
   mrpt::config::CConfigFileMemory config(
-      "[rawlog]\ntolerance_focal_px = 3\ntolerance_angle_deg = 5\n[bad]\ntolerance_baseline_m = -1\n");
+      "[rawlog]\ntolerance_focal_px = 3\ntolerance_angle_deg = 5\n[bad]\ntolerance_baseline_m = "
+      "-1\n");
   IniSection section(config, "rawlog");
   const CalibrationTolerance tolerance = loadCalibrationTolerance(section);
   section.rejectUnknownKeys();

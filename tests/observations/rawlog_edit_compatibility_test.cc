@@ -61,7 +61,8 @@ TEST_P(RawlogEditTest, ListsOurStereoAndImageObservations) {
   // --describe loads every image, so it also proves MRPT finds our external image files.
   const std::string described = outputOf(command + " --describe");
   EXPECT_EQ(occurrences(described, "ClassName: mrpt::obs::CObservationStereoImages"), 3u);
-  EXPECT_EQ(occurrences(described, "ClassName: mrpt::obs::CObservationImage\n"), trinocular ? 3u : 0u);
+  EXPECT_EQ(occurrences(described, "ClassName: mrpt::obs::CObservationImage\n"),
+            trinocular ? 3u : 0u);
   // Once per pair and once per top-camera image.
   EXPECT_EQ(occurrences(described, "Image size: 64x48 pixels"), trinocular ? 6u : 3u);
   EXPECT_EQ(occurrences(described, "MRPT exception"), 0u) << described;
@@ -74,7 +75,8 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(std::make_tuple(RawlogLayout::kObservations, ImageStorage::kEmbedded, true),
                       std::make_tuple(RawlogLayout::kObservations, ImageStorage::kExternal, false),
                       std::make_tuple(RawlogLayout::kSensoryFrames, ImageStorage::kEmbedded, false),
-                      std::make_tuple(RawlogLayout::kSensoryFrames, ImageStorage::kExternal, true)));
+                      std::make_tuple(RawlogLayout::kSensoryFrames, ImageStorage::kExternal,
+                                      true)));
 
 }  // namespace
 }  // namespace stereonav

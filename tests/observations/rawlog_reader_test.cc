@@ -85,8 +85,8 @@ class DamagedRawlogTest : public ::testing::Test {
   void SetUp() override {
     frames_ = sampleFrames(triclopsRig(), 6);
     for (const int level : {0, 1}) {
-      RawlogWriter writer(path(level), {RawlogLayout::kObservations, ImageStorage::kEmbedded,
-                                        level, "TRICLOPS"});
+      RawlogWriter writer(
+          path(level), {RawlogLayout::kObservations, ImageStorage::kEmbedded, level, "TRICLOPS"});
       for (const auto& frame : frames_) writer.write(frame);
     }
     bytes_ = readBytes(path(0));
@@ -151,7 +151,8 @@ TEST_F(DamagedRawlogTest, TruncatedGzipStopsAtAnObjectStartAndKeepsTheFramesBefo
   ASSERT_LT(result.damage->object_index, objects_.size());
   EXPECT_EQ(result.damage->byte_offset, objects_[result.damage->object_index].offset);
   size_t pairs_before = 0;
-  for (size_t i = 0; i < result.damage->object_index; ++i) pairs_before += objects_[i].class_name == kPair;
+  for (size_t i = 0; i < result.damage->object_index; ++i)
+    pairs_before += objects_[i].class_name == kPair;
   EXPECT_GT(pairs_before, 0u);
   EXPECT_LT(pairs_before, 6u);
   expectFramesArePrefix(frames_, result.frames, pairs_before);
@@ -213,7 +214,7 @@ TEST(RawlogReaderTest, UnusableFramesAreSkippedAndCounted) {
     auto archive = mrpt::serialization::archiveFrom(out);
     for (size_t i = 0; i < frames.size(); ++i) {
       auto pair = toRigObservations(frames[i], "TRICLOPS").pair;
-      if (i == 1) pair->leftCamera.intrinsicParams.setZero();  // no calibration
+      if (i == 1) pair->leftCamera.intrinsicParams.setZero();             // no calibration
       if (i == 2) pair->leftCamera.ncols = pair->rightCamera.ncols = 80;  // images not 80 wide
       if (i == 3) pair->rightCamera.ncols = 80;  // and the rig disagrees with itself
       archive << *pair;

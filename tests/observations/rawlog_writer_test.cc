@@ -1,13 +1,14 @@
+#include "observations/rawlog_writer.h"
+
 #include <gtest/gtest.h>
+#include <mrpt/config/CConfigFileMemory.h>
+#include <mrpt/io/CFileGZOutputStream.h>
+#include <mrpt/serialization/CArchive.h>
 
 #include <filesystem>
 #include <tuple>
 
-#include <mrpt/io/CFileGZOutputStream.h>
-#include <mrpt/serialization/CArchive.h>
-
 #include "observations/rawlog_reader.h"
-#include "observations/rawlog_writer.h"
 #include "observations/rig_observations.h"
 #include "sample_frames.h"
 
@@ -47,7 +48,8 @@ TEST_P(RawlogRoundTripTest, ReadsBackTheFramesWritten) {
   const size_t pixel_bytes = frames.size() * (1 + frames[0].secondaries.size()) * 64 * 48;
   const bool rawlog_holds_pixels = std::filesystem::file_size(path) > pixel_bytes;
   EXPECT_EQ(rawlog_holds_pixels, storage == ImageStorage::kEmbedded);
-  EXPECT_EQ(std::filesystem::exists(scratch.file("run_Images")), storage == ImageStorage::kExternal);
+  EXPECT_EQ(std::filesystem::exists(scratch.file("run_Images")),
+            storage == ImageStorage::kExternal);
 
   const auto read = readAll(path);
   ASSERT_EQ(read.size(), frames.size());
@@ -148,6 +150,24 @@ TEST(RawlogWriterTest, WriteAfterFinishIsAnError) {
   RawlogWriter writer(scratch.file("done.rawlog"), {});
   writer.finish();
   EXPECT_THROW(writer.write(sampleFrames(binocularRig(), 1)[0]), std::logic_error);
+}
+
+TEST(RawlogWriterTest, OptionsLoadFromIni) {
+  mrpt::config::CConfigFileMemory config(
+      "[rawlog]\nlayout = sensory_frames\nimages = external\ncompression_level = 0\n"
+      "sensor_label = BUMBLEBEE\n[typo]\nlayout = sensoryframes\n[level]\ncompression_level = "
+      "10\n");
+  IniSection section(config, "rawlog");
+  const RawlogWriterOptions options = loadRawlogWriterOptions(section);
+  section.rejectUnknownKeys();
+  EXPECT_EQ(options.layout, RawlogLayout::kSensoryFrames);
+  EXPECT_EQ(options.image_storage, ImageStorage::kExternal);
+  EXPECT_EQ(options.compression_level, 0);
+  EXPECT_EQ(options.sensor_label, "BUMBLEBEE");
+  for (const std::string bad : {"typo", "level"}) {
+    IniSection bad_section(config, bad);
+    EXPECT_THROW(loadRawlogWriterOptions(bad_section), ConfigError) << bad;
+  }
 }
 
 TEST(RawlogWriterTest, UnwritablePathIsReportedByName) {

@@ -151,8 +151,8 @@ TEST(RigObservationsTest, RejectsWhatIsNotARectifiedRigWithImagesOfItsSize) {
   EXPECT_EQ(rejectionOf(turned), RejectReason::kNotRectified);
 
   auto small_image = fresh();
-  small_image.pair->imageLeft = mrpt::img::CImage(cv::Mat(48, 32, CV_8UC1, cv::Scalar(7)),
-                                                  mrpt::img::DEEP_COPY);
+  small_image.pair->imageLeft =
+      mrpt::img::CImage(cv::Mat(48, 32, CV_8UC1, cv::Scalar(7)), mrpt::img::DEEP_COPY);
   EXPECT_EQ(rejectionOf(small_image), RejectReason::kWrongImageFormat);
 
   auto colour_among_grey = fresh();

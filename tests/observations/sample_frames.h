@@ -3,12 +3,10 @@
 #include <gtest/gtest.h>
 #include <mrpt/core/bits_math.h>
 #include <mrpt/system/datetime.h>
-
-#include <opencv2/core.hpp>
-
 #include <unistd.h>
 
 #include <filesystem>
+#include <opencv2/core.hpp>
 #include <string>
 #include <vector>
 
@@ -24,8 +22,8 @@ inline CameraRig sampleRig(std::vector<SecondaryCamera> secondaries) {
   rig.reference = {64, 48, 50.0, 31.5, 23.5};
   rig.baseline_m = 0.1;
   rig.secondaries = std::move(secondaries);
-  rig.pose_on_robot = CameraRig::opticalPoseOnRobot(0.2, 0.05, 0.8, mrpt::DEG2RAD(5.0),
-                                                    mrpt::DEG2RAD(10.0));
+  rig.pose_on_robot =
+      CameraRig::opticalPoseOnRobot(0.2, 0.05, 0.8, mrpt::DEG2RAD(5.0), mrpt::DEG2RAD(10.0));
   return rig;
 }
 // Triclops L: reference = right camera, left and top secondaries (paper section 2.1).
