@@ -14,8 +14,8 @@ namespace stereonav {
 // The two rawlog formats MRPT tools read
 // (https://docs.mrpt.org/reference/latest/robotics_file_formats.html):
 enum class RawlogLayout {
-  // A flat sequence of observations; odometry as CObservationOdometry (absolute pose) before
-  // the frame's camera observations.
+  // A flat sequence of observations; odometry as a CObservationOdometry labelled "ODOMETRY"
+  // (absolute pose, the frame's timestamp) before the frame's camera observations.
   kObservations,
   // Alternating CActionCollection / CSensoryFrame; odometry as a CActionRobotMovement2D holding
   // the motion since the previous recorded odometry pose (the first: since the odometry origin),

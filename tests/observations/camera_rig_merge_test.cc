@@ -4,6 +4,8 @@
 #include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/core/bits_math.h>
 
+#include "observations/rawlog_reader.h"
+#include "observations/rawlog_writer.h"
 #include "sample_frames.h"
 
 namespace stereonav {
@@ -73,6 +75,31 @@ TEST(CameraRigMergeTest, DifferentCamerasAreReported) {
   small.reference.width = 32;
   EXPECT_TRUE(mentions(mergeCameraRigs(triclopsRig(), small, {}).warnings,
                        "image size: ini 64x48, rawlog 32x48"));
+}
+
+TEST(CameraRigMergeTest, IniRigAgainstARecordedRawlog) {
+  // The whole path a mapper takes: [rig] from the ini, the rig recorded with the first frame.
+  ScratchDirectory scratch;
+  const std::string path = scratch.file("recorded.rawlog");
+  {
+    RawlogWriter writer(path, {});
+    writer.write(sampleFrames(triclopsRig(), 1)[0]);
+  }
+  RawlogReader reader(path, {});
+  const auto frame = reader.next();
+  ASSERT_TRUE(frame.has_value());
+
+  // The same head as triclopsRig() but for the focal length.
+  mrpt::config::CConfigFileMemory config(
+      "[rig]\nwidth = 64\nheight = 48\nfocal_px = 52\ncx = 31.5\ncy = 23.5\nbaseline_m = 0.1\n"
+      "secondary_cameras = -1 0; 0 -1\nmount_x = 0.2\nmount_y = 0.05\nmount_z = 0.8\n"
+      "mount_yaw_deg = 5\nmount_tilt_deg = 10\n");
+  IniSection section(config, "rig");
+  const auto merged = mergeCameraRigs(loadCameraRig(section), frame->rig, {});
+  ASSERT_EQ(merged.warnings.size(), 1u);
+  EXPECT_EQ(merged.warnings[0],
+            "focal length: ini 52 px, rawlog 50 px (differ by more than 0.5 px); using the ini value");
+  EXPECT_DOUBLE_EQ(merged.rig.reference.focal_px, 52.0);
 }
 
 TEST(CameraRigMergeTest, TolerancesLoadFromIni) {
