@@ -1,0 +1,122 @@
+#include "disparity/disparity_engine.h"
+
+#include <gtest/gtest.h>
+
+#include <iostream>
+
+#include "disparity/disparity_evaluation.h"
+#include "tsukuba.h"
+
+namespace stereonav {
+namespace {
+
+using testing::tsukubaBinocular;
+using testing::tsukubaGroundTruth;
+using testing::tsukubaMultiBaseline;
+
+// The shipped defaults (StereoOptions, ini/*.ini) except for the disparity range: tsukuba's
+// disparities are 5..14, so 16 candidates, and the uniqueness threshold, which scales with
+// 1/candidates (0.02 for the default 32, so 0.04 for 16).
+StereoOptions tsukubaOptions() {
+  StereoOptions options;
+  options.max_disparity = 15;
+  options.uniqueness_threshold = 0.04;
+  return options;
+}
+
+DisparityEvaluation evaluate(const StereoFrame& frame, const StereoOptions& options) {
+  return evaluateDisparity(computeDisparity(frame, options), tsukubaGroundTruth(), 18);
+}
+
+void print(const char* what, const DisparityEvaluation& result) {
+  std::cout << what << ": density " << 100 * result.density << "%, bad-1.0 " << 100 * result.bad_1 << "%, bad-2.0 "
+            << 100 * result.bad_2 << "%, mean abs error " << result.mean_abs_error << " px\n";
+}
+
+TEST(TsukubaTest, BinocularSadWithValidation) {
+  const DisparityEvaluation result = evaluate(tsukubaBinocular(), tsukubaOptions());
+  print("binocular SAD", result);
+  EXPECT_GE(result.density, 0.85);
+  EXPECT_LE(result.bad_1, 0.050);
+}
+
+TEST(TsukubaTest, MultiBaselineSadWithValidation) {
+  const DisparityEvaluation result = evaluate(tsukubaMultiBaseline(), tsukubaOptions());
+  print("multi-baseline SAD", result);
+  EXPECT_GE(result.density, 0.85);
+  EXPECT_LE(result.bad_1, 0.030);
+}
+
+TEST(TsukubaTest, OpenCvStereoBmForScale) {
+  StereoOptions options = tsukubaOptions();
+  options.backend = StereoBackend::kOpenCvBm;
+  options.left_right_check = false;
+  options.opencv_speckle_window = 100;
+  options.opencv_speckle_range = 2;
+  const DisparityEvaluation result = evaluate(tsukubaBinocular(), options);
+  print("cv::StereoBM + speckle filter", result);
+  EXPECT_GE(result.density, 0.8);
+  EXPECT_LE(result.bad_1, 0.08);
+}
+
+TEST(TsukubaTest, OpenCvStereoSgbmRuns) {
+  StereoOptions options = tsukubaOptions();
+  options.backend = StereoBackend::kOpenCvSgbm;
+  const DisparityEvaluation result = evaluate(tsukubaBinocular(), options);
+  print("cv::StereoSGBM", result);
+  EXPECT_GE(result.density, 0.8);
+  EXPECT_LE(result.bad_1, 0.08);
+}
+
+// Paper section 2.2: "The trade-off is between quality and quantity of data." Each test alone,
+// tightened step by step from off, must cost density and buy accuracy.
+void expectQualityQuantityTradeOff(const std::vector<StereoOptions>& tightening, const char* what) {
+  DisparityEvaluation previous;
+  for (size_t step = 0; step < tightening.size(); ++step) {
+    const DisparityEvaluation result = evaluate(tsukubaBinocular(), tightening[step]);
+    print(what, result);
+    if (step > 0) {
+      EXPECT_LT(result.density, previous.density) << what << " step " << step;
+      EXPECT_LT(result.bad_1, previous.bad_1) << what << " step " << step;
+    }
+    previous = result;
+  }
+}
+
+StereoOptions unvalidated() {
+  StereoOptions options = tsukubaOptions();
+  options.texture_threshold = 0.0;
+  options.uniqueness_threshold = 1.0;
+  options.left_right_check = false;
+  return options;
+}
+
+TEST(TsukubaTest, TighterTextureThresholdTradesDensityForAccuracy) {
+  std::vector<StereoOptions> steps(3, unvalidated());
+  steps[1].texture_threshold = 0.25;
+  steps[2].texture_threshold = 0.5;
+  expectQualityQuantityTradeOff(steps, "texture 0 / 0.25 / 0.5");
+}
+
+TEST(TsukubaTest, TighterUniquenessThresholdTradesDensityForAccuracy) {
+  std::vector<StereoOptions> steps(4, unvalidated());
+  steps[1].uniqueness_threshold = 0.045;
+  steps[2].uniqueness_threshold = 0.04;
+  steps[3].uniqueness_threshold = 0.03;
+  expectQualityQuantityTradeOff(steps, "uniqueness off / 0.045 / 0.04 / 0.03");
+}
+
+TEST(DisparityEngineTest, RejectsADisparityRangeAsWideAsTheImage) {
+  StereoOptions options;
+  options.max_disparity = 40;
+  const StereoFrame frame{cv::Mat1b(30, 40, uchar{0}), {{cv::Mat1b(30, 40, uchar{0}), {1, 0}}}};
+  EXPECT_THROW(computeDisparity(frame, options), ConfigError);
+}
+
+TEST(DisparityEngineTest, RejectsViewsOfDifferentSizes) {
+  const StereoFrame frame{cv::Mat1b(30, 40, uchar{0}), {{cv::Mat1b(30, 41, uchar{0}), {1, 0}}}};
+  EXPECT_THROW(computeDisparity(frame, StereoOptions{}), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace stereonav

@@ -1,0 +1,53 @@
+#include "disparity/disparity_evaluation.h"
+
+#include <gtest/gtest.h>
+#include <opencv2/imgcodecs.hpp>
+
+#include <filesystem>
+
+#include "disparity/disparity_image.h"
+
+namespace stereonav {
+namespace {
+
+TEST(DisparityEvaluationTest, CountsOnlyKnownPixelsInsideTheBorder) {
+  // 6x3 image, 1-pixel border ignored: the inner 4x1 row is evaluated.
+  cv::Mat1f truth(3, 6, 5.0f), disparity(3, 6, 100.0f);  // the border is all wrong: must not count
+  truth(1, 4) = kInvalidDisparity;                           // unknown: not counted either
+  disparity(1, 1) = 5.5f;                                    // error 0.5
+  disparity(1, 2) = 6.5f;                                    // error 1.5: bad-1 only
+  disparity(1, 3) = kInvalidDisparity;                       // known but no disparity
+  disparity(1, 4) = 9.0f;                                    // unknown truth
+  const DisparityEvaluation result = evaluateDisparity(disparity, truth, 1);
+  EXPECT_EQ(result.known_pixels, 3);
+  EXPECT_EQ(result.valid_pixels, 2);
+  EXPECT_DOUBLE_EQ(result.density, 2.0 / 3.0);
+  EXPECT_DOUBLE_EQ(result.bad_1, 0.5);
+  EXPECT_DOUBLE_EQ(result.bad_2, 0.0);
+  EXPECT_DOUBLE_EQ(result.mean_abs_error, 1.0);
+}
+
+TEST(DisparityEvaluationTest, ErrorsExactlyAtTheThresholdAreNotBad) {
+  cv::Mat1f truth(1, 3, 4.0f), disparity(1, 3);
+  disparity << 5.0f, 6.0f, 6.25f;
+  const DisparityEvaluation result = evaluateDisparity(disparity, truth, 0);
+  EXPECT_DOUBLE_EQ(result.bad_1, 2.0 / 3.0);
+  EXPECT_DOUBLE_EQ(result.bad_2, 1.0 / 3.0);
+}
+
+TEST(DisparityEvaluationTest, LoadsMiddleburyGroundTruthWithScaleAndUnknownZero) {
+  const std::string path = (std::filesystem::temp_directory_path() / "stereonav_gt_test.pgm").string();
+  cv::Mat1b raw(2, 2);
+  raw << 0, 16, 80, 255;
+  ASSERT_TRUE(cv::imwrite(path, raw));
+  const cv::Mat1f truth = loadMiddleburyGroundTruth(path, 16.0);
+  std::filesystem::remove(path);
+  EXPECT_EQ(truth(0, 0), kInvalidDisparity);
+  EXPECT_FLOAT_EQ(truth(0, 1), 1.0f);
+  EXPECT_FLOAT_EQ(truth(1, 0), 5.0f);
+  EXPECT_FLOAT_EQ(truth(1, 1), 255.0f / 16.0f);
+  EXPECT_THROW(loadMiddleburyGroundTruth("/nonexistent/gt.pgm", 16.0), std::runtime_error);
+}
+
+}  // namespace
+}  // namespace stereonav

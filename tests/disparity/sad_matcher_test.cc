@@ -1,0 +1,254 @@
+#include "disparity/sad_matcher.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <vector>
+
+#include "synthetic_scene.h"
+
+namespace stereonav {
+namespace {
+
+using testing::rectMask;
+using testing::shareCorrect;
+using testing::SyntheticScene;
+
+const cv::Size kSize(120, 90);
+const cv::Rect kPlane(45, 30, 40, 35);  // a near plane in front of the background
+
+StereoOptions matchOptions() {
+  StereoOptions options;
+  options.min_disparity = 0;
+  options.max_disparity = 15;
+  options.window = 7;
+  return options;
+}
+
+StereoFrame renderFrame(SyntheticScene& scene, const std::vector<SecondaryCamera>& cameras) {
+  StereoFrame frame;
+  frame.reference = scene.view(0, 0);
+  for (const SecondaryCamera& camera : cameras) frame.secondaries.push_back({scene.view(camera.bx, camera.by), camera});
+  return frame;
+}
+
+// Pixels at least `gap` away from the plane's outline (inside and outside) and from the image border
+// plus `border`: there every camera sees the same surface as the reference, through the whole window.
+cv::Mat1b awayFromEdges(int gap, int border) {
+  cv::Mat1b mask = rectMask(kSize, cv::Rect(border, border, kSize.width - 2 * border, kSize.height - 2 * border));
+  const cv::Rect outline(kPlane.x - gap, kPlane.y - gap, kPlane.width + 2 * gap, kPlane.height + 2 * gap);
+  const cv::Rect inner(kPlane.x + gap, kPlane.y + gap, kPlane.width - 2 * gap, kPlane.height - 2 * gap);
+  mask(outline & cv::Rect(cv::Point(), kSize)).setTo(0);
+  mask(inner).setTo(255);
+  return mask;
+}
+
+struct RigCase {
+  const char* name;
+  std::vector<SecondaryCamera> cameras;
+  int border;  // columns on the side(s) where candidates leave the image, plus the window
+};
+
+class PlanesAtKnownDisparityTest : public ::testing::TestWithParam<RigCase> {};
+
+TEST_P(PlanesAtKnownDisparityTest, FindsBothPlanes) {
+  SyntheticScene scene(kSize, 4.0, 7);
+  scene.addPlane(kPlane, 10.0);
+  const StereoFrame frame = renderFrame(scene, GetParam().cameras);
+  const SadMatch match = matchSad(frame, matchOptions());
+  // Occlusions reach 2 * (10 - 4) pixels from the plane's outline for the longest baselines.
+  EXPECT_GE(shareCorrect(match.disparity, scene.trueDisparity(), awayFromEdges(16, GetParam().border)), 0.99)
+      << GetParam().name;
+  EXPECT_DOUBLE_EQ(match.disparity(kPlane.y + 17, kPlane.x + 20), 10.0) << GetParam().name;
+  EXPECT_DOUBLE_EQ(match.disparity(20, 35), 4.0) << GetParam().name;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Rigs, PlanesAtKnownDisparityTest,
+    ::testing::Values(RigCase{"binocular right", {{1, 0}}, 18}, RigCase{"binocular left", {{-1, 0}}, 18},
+                      RigCase{"top camera", {{0, -1}}, 18}, RigCase{"bottom camera", {{0, 1}}, 18},
+                      RigCase{"triclops L", {{-1, 0}, {0, -1}}, 18},
+                      RigCase{"middlebury collinear", {{-2, 0}, {-1, 0}, {1, 0}, {2, 0}}, 18},
+                      RigCase{"double baseline", {{2, 0}}, 33}, RigCase{"half baseline", {{0.5, 0}}, 11},
+                      RigCase{"diagonal", {{1, 1}}, 18}),
+    [](const auto& info) {
+      std::string name = info.param.name;
+      std::replace(name.begin(), name.end(), ' ', '_');
+      return name;
+    });
+
+TEST(SadMatcherTest, HalfBaselineInterpolatesHalfPixelShifts) {
+  // With a 0.5 baseline, odd disparities shift the secondary view by half pixels. On raw grey
+  // levels linear interpolation finds them exactly; after the x-Sobel prefilter, which amplifies
+  // the interpolation's smoothing, within one disparity (half a pixel in the secondary image).
+  SyntheticScene scene(kSize, 5.0, 3);
+  scene.addPlane(kPlane, 11.0);
+  const StereoFrame frame = renderFrame(scene, {{0.5, 0}});
+  StereoOptions options = matchOptions();
+  EXPECT_GE(shareCorrect(matchSad(frame, options).disparity, scene.trueDisparity(), awayFromEdges(8, 12), 1.0), 0.99);
+  options.prefilter = Prefilter::kNone;
+  EXPECT_GE(shareCorrect(matchSad(frame, options).disparity, scene.trueDisparity(), awayFromEdges(8, 12)), 0.99);
+}
+
+TEST(SadMatcherTest, SubpixelRefinementRecoversFractionalDisparity) {
+  SyntheticScene scene(kSize, 6.5, 5);
+  const StereoFrame frame = renderFrame(scene, {{1, 0}});
+  StereoOptions options = matchOptions();
+  const cv::Mat1b interior = rectMask(kSize, cv::Rect(25, 10, 80, 70));
+  const SadMatch whole = matchSad(frame, options);
+  options.subpixel = true;
+  const SadMatch refined = matchSad(frame, options);
+  double whole_error = 0.0, refined_error = 0.0;
+  for (int y = 10; y < 80; ++y) {
+    for (int x = 25; x < 105; ++x) {
+      whole_error += std::abs(whole.disparity(y, x) - 6.5);
+      refined_error += std::abs(refined.disparity(y, x) - 6.5);
+    }
+  }
+  const double pixels = cv::countNonZero(interior);
+  EXPECT_GE(whole_error / pixels, 0.5);  // integer disparities are at least half a pixel off
+  EXPECT_LT(refined_error / pixels, 0.2);
+}
+
+// Window scores computed the slow way: per candidate, per camera, the plain SAD of the prefiltered
+// images over the window, combined by sum or by the ceil(N/2) lowest.
+struct BruteForce {
+  int best_score;
+  int score_sum;
+  int best_disparity;
+};
+
+BruteForce bruteForce(const std::vector<cv::Mat1b>& images, const std::vector<SecondaryCamera>& cameras,
+                      const StereoOptions& options, int x, int y, bool best_half) {
+  const int r = options.window / 2;
+  BruteForce result{1 << 30, 0, -1};
+  for (int d = options.min_disparity; d <= options.max_disparity; ++d) {
+    std::vector<int> per_camera;
+    for (size_t c = 0; c < cameras.size(); ++c) {
+      int sad = 0;
+      for (int dy = -r; dy <= r; ++dy) {
+        for (int dx = -r; dx <= r; ++dx) {
+          const int sx = x + dx - static_cast<int>(cameras[c].bx) * d;
+          const int sy = y + dy - static_cast<int>(cameras[c].by) * d;
+          sad += std::abs(images[0](y + dy, x + dx) - images[c + 1](sy, sx));
+        }
+      }
+      per_camera.push_back(sad);
+    }
+    std::sort(per_camera.begin(), per_camera.end());
+    const size_t kept = best_half ? (per_camera.size() + 1) / 2 : per_camera.size();
+    int score = 0;
+    for (size_t k = 0; k < kept; ++k) score += per_camera[k];
+    result.score_sum += score;
+    if (score < result.best_score) {
+      result.best_score = score;
+      result.best_disparity = d;
+    }
+  }
+  return result;
+}
+
+void expectMatchesBruteForce(const std::vector<SecondaryCamera>& cameras, StereoOptions options) {
+  cv::RNG rng(11);
+  StereoFrame frame;
+  frame.reference.create(60, 80);
+  rng.fill(frame.reference, cv::RNG::UNIFORM, 0, 256);
+  std::vector<cv::Mat1b> images{frame.reference};
+  for (const SecondaryCamera& camera : cameras) {
+    cv::Mat1b image(60, 80);
+    rng.fill(image, cv::RNG::UNIFORM, 0, 256);
+    frame.secondaries.push_back({image, camera});
+    images.push_back(image);
+  }
+  options.prefilter = Prefilter::kNone;  // compare raw grey levels
+  const SadMatch match = matchSad(frame, options);
+  const bool best_half = options.combination == CameraCombination::kBestHalf;
+  // Points where every camera of the cases below sees every candidate.
+  for (const cv::Point& p : {cv::Point(40, 30), cv::Point(38, 40), cv::Point(45, 25)}) {
+    const BruteForce expected = bruteForce(images, cameras, options, p.x, p.y, best_half);
+    EXPECT_EQ(match.best_score(p), expected.best_score) << p;
+    EXPECT_EQ(match.score_sum(p), expected.score_sum) << p;
+    EXPECT_EQ(match.disparity(p), expected.best_disparity) << p;
+  }
+}
+
+TEST(SadMatcherTest, ScoresEqualPlainSadOneCamera) {
+  expectMatchesBruteForce({{1, 0}}, matchOptions());
+}
+
+TEST(SadMatcherTest, ScoresEqualSumOfCameraSads) {
+  StereoOptions options = matchOptions();
+  options.max_disparity = 12;  // 13 candidates: the last vector is partly padding
+  expectMatchesBruteForce({{-1, 0}, {0, -1}, {1, 0}}, options);
+}
+
+TEST(SadMatcherTest, WideAccumulatorsWhenSixteenBitsCouldOverflow) {
+  StereoOptions options = matchOptions();
+  options.window = 15;  // 225 * 255 * 2 cameras > 65535
+  options.max_disparity = 10;
+  expectMatchesBruteForce({{1, 0}, {0, 1}}, options);
+}
+
+TEST(SadMatcherTest, BestHalfKeepsTheLowestCameraScores) {
+  StereoOptions options = matchOptions();
+  options.combination = CameraCombination::kBestHalf;
+  expectMatchesBruteForce({{-2, 0}, {-1, 0}, {1, 0}, {2, 0}}, options);
+}
+
+TEST(SadMatcherTest, MinimumDisparityOffsetsTheSearch) {
+  StereoOptions options = matchOptions();
+  options.min_disparity = 3;
+  options.max_disparity = 20;
+  expectMatchesBruteForce({{1, 0}}, options);
+}
+
+TEST(SadMatcherTest, BestHalfMatchesOccludedStripsThatTheSumGetsWrong) {
+  // Left of the plane, a strip of background is hidden from the cameras on the right (bx > 0);
+  // right of it, from those on the left. The cameras on the other side still see it.
+  SyntheticScene scene(kSize, 3.0, 9);
+  scene.addPlane(kPlane, 9.0);
+  const StereoFrame frame = renderFrame(scene, {{-2, 0}, {-1, 0}, {1, 0}, {2, 0}});
+  // The 6 (= 9 - 3) columns next to the plane are hidden from both cameras on one side.
+  cv::Mat1b strips = rectMask(kSize, cv::Rect(kPlane.x - 6, kPlane.y + 4, 6, kPlane.height - 8));
+  strips(cv::Rect(kPlane.br().x, kPlane.y + 4, 6, kPlane.height - 8)).setTo(255);
+  StereoOptions options = matchOptions();
+  const double sum_correct = shareCorrect(matchSad(frame, options).disparity, scene.trueDisparity(), strips);
+  options.combination = CameraCombination::kBestHalf;
+  const double best_half_correct = shareCorrect(matchSad(frame, options).disparity, scene.trueDisparity(), strips);
+  // Pixels whose window straddles the plane's edge stay hard for both (about 0.73 vs 0.82 here).
+  EXPECT_GT(best_half_correct, sum_correct + 0.05);
+  EXPECT_GT(best_half_correct, 0.75);
+}
+
+TEST(SadMatcherTest, BordersUseTheCamerasThatStillSeeEveryCandidate) {
+  SyntheticScene scene(kSize, 6.0, 13);
+  const StereoFrame frame = renderFrame(scene, {{-1, 0}, {0, -1}});  // Triclops L: left and top
+  const SadMatch match = matchSad(frame, matchOptions());
+  const cv::Mat1f truth = scene.trueDisparity();
+  const int w = kSize.width, h = kSize.height, max_d = 15;
+  // Right strip: the left camera's candidates leave the image, the top camera's do not.
+  EXPECT_GE(shareCorrect(match.disparity, truth, rectMask(kSize, cv::Rect(w - max_d, 10, max_d - 3, h - max_d - 20))), 0.99);
+  // Bottom strip: only the left camera.
+  EXPECT_GE(shareCorrect(match.disparity, truth, rectMask(kSize, cv::Rect(10, h - max_d, w - max_d - 20, max_d - 3))), 0.99);
+  // Bottom-right corner: no camera sees all candidates.
+  EXPECT_EQ(testing::shareInvalid(match.disparity, rectMask(kSize, cv::Rect(w - max_d, h - max_d, max_d, max_d))), 1.0);
+}
+
+TEST(SadMatcherTest, ThreadsGiveTheSameResult) {
+  SyntheticScene scene(kSize, 4.0, 17);
+  scene.addPlane(kPlane, 10.0);
+  const StereoFrame frame = renderFrame(scene, {{-1, 0}, {0, -1}});
+  StereoOptions options = matchOptions();
+  const SadMatch single = matchSad(frame, options);
+  options.threads = 3;
+  const SadMatch striped = matchSad(frame, options);
+  EXPECT_EQ(cv::norm(single.best_score, striped.best_score, cv::NORM_INF), 0.0);
+  EXPECT_EQ(cv::norm(single.score_sum, striped.score_sum, cv::NORM_INF), 0.0);
+  cv::Mat1f a = single.disparity.clone(), b = striped.disparity.clone();
+  a.setTo(-1, a == kInvalidDisparity);
+  b.setTo(-1, b == kInvalidDisparity);
+  EXPECT_EQ(cv::norm(a, b, cv::NORM_INF), 0.0);
+}
+
+}  // namespace
+}  // namespace stereonav

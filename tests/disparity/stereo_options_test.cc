@@ -1,0 +1,81 @@
+#include "disparity/stereo_options.h"
+
+#include <gtest/gtest.h>
+#include <mrpt/config/CConfigFileMemory.h>
+
+namespace stereonav {
+namespace {
+
+StereoOptions load(const std::string& text) {
+  mrpt::config::CConfigFileMemory config("[stereo]\n" + text);
+  IniSection section(config, "stereo");
+  const StereoOptions options = loadStereoOptions(section);
+  section.rejectUnknownKeys();
+  return options;
+}
+
+std::string errorOf(const std::string& text) {
+  try {
+    load(text);
+  } catch (const ConfigError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+TEST(StereoOptionsTest, LoadsEveryKey) {
+  const StereoOptions options = load(
+      "backend = sgbm\nmin_disparity = 2\nmax_disparity = 47\nwindow = 9\nprefilter = log\nprefilter_cap = 20\n"
+      "combination = best_half\ntexture_threshold = 1.5\ntexture_sigma = 2\nuniqueness_threshold = 0.03\n"
+      "left_right_check = false\nleft_right_max_diff = 2\nsubpixel = true\nthreads = 4\n"
+      "opencv_texture_threshold = 5\nopencv_uniqueness_ratio = 10\nopencv_speckle_window = 100\n"
+      "opencv_speckle_range = 2\n");
+  EXPECT_EQ(options.backend, StereoBackend::kOpenCvSgbm);
+  EXPECT_EQ(options.min_disparity, 2);
+  EXPECT_EQ(options.max_disparity, 47);
+  EXPECT_EQ(options.disparityCount(), 46);
+  EXPECT_EQ(options.window, 9);
+  EXPECT_EQ(options.prefilter, Prefilter::kLog);
+  EXPECT_EQ(options.prefilter_cap, 20);
+  EXPECT_EQ(options.combination, CameraCombination::kBestHalf);
+  EXPECT_DOUBLE_EQ(options.texture_threshold, 1.5);
+  EXPECT_DOUBLE_EQ(options.texture_sigma, 2.0);
+  EXPECT_DOUBLE_EQ(options.uniqueness_threshold, 0.03);
+  EXPECT_FALSE(options.left_right_check);
+  EXPECT_DOUBLE_EQ(options.left_right_max_diff, 2.0);
+  EXPECT_TRUE(options.subpixel);
+  EXPECT_EQ(options.threads, 4);
+  EXPECT_EQ(options.opencv_texture_threshold, 5);
+  EXPECT_EQ(options.opencv_uniqueness_ratio, 10);
+  EXPECT_EQ(options.opencv_speckle_window, 100);
+  EXPECT_EQ(options.opencv_speckle_range, 2);
+}
+
+TEST(StereoOptionsTest, EmptySectionGivesTheDefaults) {
+  const StereoOptions options = load("");
+  const StereoOptions defaults;
+  EXPECT_EQ(options.max_disparity, defaults.max_disparity);
+  EXPECT_EQ(options.window, 7);
+  EXPECT_EQ(options.backend, StereoBackend::kSad);
+  EXPECT_FALSE(options.subpixel);  // paper section 3.2
+}
+
+TEST(StereoOptionsTest, UnknownKeyIsNamedWithTheNearestKnownOne) {
+  const std::string message = errorOf("uniquenes_threshold = 0.1\n");
+  EXPECT_NE(message.find("uniquenes_threshold"), std::string::npos) << message;
+  EXPECT_NE(message.find("'uniqueness_threshold'"), std::string::npos) << message;
+}
+
+TEST(StereoOptionsTest, BadValuesNameTheKey) {
+  EXPECT_NE(errorOf("window = 8\n").find("[stereo] window"), std::string::npos);
+  EXPECT_NE(errorOf("window = 1\n").find("[stereo] window"), std::string::npos);
+  EXPECT_NE(errorOf("max_disparity = 0\n").find("[stereo] max_disparity"), std::string::npos);
+  EXPECT_NE(errorOf("backend = census\n").find("[stereo] backend: expected bm | sad | sgbm"), std::string::npos);
+  EXPECT_NE(errorOf("prefilter = median\n").find("[stereo] prefilter"), std::string::npos);
+  EXPECT_NE(errorOf("threads = 0\n").find("[stereo] threads"), std::string::npos);
+  EXPECT_NE(errorOf("texture_threshold = -1\n").find("[stereo] texture_threshold"), std::string::npos);
+  EXPECT_NE(errorOf("prefilter_cap = 200\n").find("[stereo] prefilter_cap"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace stereonav

@@ -1,0 +1,138 @@
+#include "disparity/validation.h"
+
+#include <gtest/gtest.h>
+
+#include "disparity/disparity_engine.h"
+#include "synthetic_scene.h"
+
+namespace stereonav {
+namespace {
+
+using testing::rectMask;
+using testing::shareCorrect;
+using testing::shareInvalid;
+using testing::SyntheticScene;
+
+const cv::Size kSize(120, 90);
+const cv::Rect kPlane(50, 25, 40, 40);
+
+// Matching without any validation; each test switches on the one it is about, with the threshold
+// stated there.
+StereoOptions unvalidated() {
+  StereoOptions options;
+  options.max_disparity = 15;
+  options.texture_threshold = 0.0;
+  options.uniqueness_threshold = 1.0;
+  options.left_right_check = false;
+  return options;
+}
+
+StereoFrame binocular(SyntheticScene& scene) { return {scene.view(0, 0), {{scene.view(1, 0), {1, 0}}}}; }
+
+TEST(TextureMapTest, IsZeroOnAFlatImageAndHighOnTexture) {
+  const cv::Mat1f flat = textureMap(cv::Mat1b(40, 40, uchar{90}), 7, 1.0);
+  EXPECT_EQ(cv::norm(flat, cv::NORM_INF), 0.0);
+  cv::Mat1b stripes(40, 40);
+  for (int x = 0; x < 40; ++x) stripes.col(x).setTo((x / 2) % 2 ? 200 : 50);
+  const cv::Mat1f textured = textureMap(stripes, 7, 1.0);
+  double lowest = 0.0;
+  cv::minMaxLoc(textured, &lowest);
+  EXPECT_GT(lowest, 10.0);
+}
+
+TEST(TextureTest, RejectsAnUntexturedPatchAndKeepsTexture) {
+  SyntheticScene scene(kSize, 5.0, 21);
+  const cv::Rect patch(30, 25, 40, 40);
+  scene.addFlatPatch(patch);
+  scene.setNoise(1.5);  // camera noise: the flat patch's scores are noise, not zero
+  const StereoFrame frame = binocular(scene);
+  // Inside by the window radius plus the Gaussian's reach, so no window sees the patch's outline.
+  const cv::Mat1b patch_inside = rectMask(kSize, cv::Rect(patch.x + 7, patch.y + 7, patch.width - 14, patch.height - 14));
+  cv::Mat1b textured = rectMask(kSize, cv::Rect(20, 5, 95, 80));
+  textured(cv::Rect(patch.x - 4, patch.y - 4, patch.width + 8, patch.height + 8)).setTo(0);
+
+  StereoOptions options = unvalidated();
+  const cv::Mat1f accepted = computeDisparity(frame, options);
+  EXPECT_LT(shareInvalid(accepted, patch_inside), 0.05);  // without the test the patch gets (noise) matches
+
+  options.texture_threshold = 1.0;
+  const cv::Mat1f validated = computeDisparity(frame, options);
+  EXPECT_GE(shareInvalid(validated, patch_inside), 0.99);
+  EXPECT_GE(shareCorrect(validated, scene.trueDisparity(), textured), 0.99);
+}
+
+// Binocular scene with a near plane: the 6 (= 9 - 3) background columns left of it are hidden
+// from the right camera, so they have no true match.
+struct OcclusionScene {
+  SyntheticScene scene{kSize, 3.0, 23};
+  cv::Mat1b occluded = rectMask(kSize, cv::Rect(kPlane.x - 6, kPlane.y, 6, kPlane.height));
+  // Visible background and plane away from the plane's outline; right of x = 120 - 15 - 3 - 3 the
+  // right camera's pixels would need candidates beyond its image when it is the reference.
+  cv::Mat1b visible = rectMask(kSize, cv::Rect(20, 5, 79, 80));
+  OcclusionScene() {
+    scene.addPlane(kPlane, 9.0);
+    visible(cv::Rect(kPlane.x - 10, kPlane.y - 4, 18, kPlane.height + 8)).setTo(0);  // occlusion and left edge
+    visible(cv::Rect(kPlane.br().x - 4, kPlane.y - 4, 8, kPlane.height + 8)).setTo(0);
+    visible(cv::Rect(kPlane.x - 4, kPlane.y - 4, kPlane.width + 8, 8)).setTo(0);
+    visible(cv::Rect(kPlane.x - 4, kPlane.br().y - 4, kPlane.width + 8, 8)).setTo(0);
+  }
+};
+
+TEST(UniquenessTest, RejectsMostOccludedPixelsAndKeepsVisibleOnes) {
+  OcclusionScene setup;
+  const StereoFrame frame = binocular(setup.scene);
+  StereoOptions options = unvalidated();
+  EXPECT_EQ(shareInvalid(computeDisparity(frame, options), setup.occluded), 0.0);
+  options.uniqueness_threshold = 0.04;
+  const cv::Mat1f validated = computeDisparity(frame, options);
+  // Occluded background still half-matches similar texture, so only part of it goes (0.31 here),
+  // but far more of it than of the visible pixels.
+  EXPECT_GE(shareInvalid(validated, setup.occluded), 0.25);
+  EXPECT_LE(shareInvalid(validated, setup.visible), 0.01);
+  EXPECT_GE(shareCorrect(validated, setup.scene.trueDisparity(), setup.visible), 0.99);
+}
+
+TEST(LeftRightCheckTest, RejectsOccludedPixelsAndKeepsVisibleOnes) {
+  OcclusionScene setup;
+  const StereoFrame frame = binocular(setup.scene);
+  StereoOptions options = unvalidated();
+  options.left_right_check = true;
+  const cv::Mat1f validated = computeDisparity(frame, options);
+  EXPECT_GE(shareInvalid(validated, setup.occluded), 0.8);
+  EXPECT_GE(shareCorrect(validated, setup.scene.trueDisparity(), setup.visible), 0.99);
+}
+
+TEST(UniquenessTest, ComparesBestScoreWithSumOfScores) {
+  SadMatch match{cv::Mat1f(1, 3, 5.0f), cv::Mat1i(1, 3), cv::Mat1i(1, 3)};
+  match.best_score << 10, 10, 0;
+  match.score_sum << 100, 40, 0;  // ratios 0.1, 0.25, undefined
+  cv::Mat1f disparity = match.disparity.clone();
+  rejectAmbiguousMatches(disparity, match, 0.2);
+  EXPECT_EQ(disparity(0, 0), 5.0f);
+  EXPECT_EQ(disparity(0, 1), kInvalidDisparity);
+  EXPECT_EQ(disparity(0, 2), kInvalidDisparity);  // all scores zero: nothing to tell candidates apart
+}
+
+TEST(LeftRightCheckTest, LooksUpTheMatchedPixelInTheSwappedImage) {
+  cv::Mat1f disparity(1, 10, kInvalidDisparity), swapped(1, 10, kInvalidDisparity);
+  disparity(0, 5) = 2.0f;  // matches x = 3 in the camera at (1, 0)
+  disparity(0, 7) = 2.0f;  // matches x = 5
+  disparity(0, 1) = 4.0f;  // matches x = -3: outside
+  swapped(0, 3) = 3.0f;    // within 1 of 2
+  swapped(0, 5) = 4.5f;    // 2.5 away
+  rejectInconsistentMatches(disparity, swapped, {1, 0}, 1.0);
+  EXPECT_EQ(disparity(0, 5), 2.0f);
+  EXPECT_EQ(disparity(0, 7), kInvalidDisparity);
+  EXPECT_EQ(disparity(0, 1), kInvalidDisparity);
+}
+
+TEST(LeftRightCheckTest, FollowsVerticalAndFractionalBaselines) {
+  cv::Mat1f disparity(10, 10, kInvalidDisparity), swapped(10, 10, kInvalidDisparity);
+  disparity(2, 4) = 6.0f;  // camera at (0, -0.5): matched pixel at y = 2 + 3 = 5
+  swapped(5, 4) = 6.0f;
+  rejectInconsistentMatches(disparity, swapped, {0, -0.5}, 0.0);
+  EXPECT_EQ(disparity(2, 4), 6.0f);
+}
+
+}  // namespace
+}  // namespace stereonav
