@@ -8,5 +8,6 @@ namespace stereonav::app {
 // One function per subcommand: arguments in (after the subcommand name), exit status out.
 // Each lives in its own <name>_command.cc and is listed in main.cc.
 int runDisparityCommand(const std::vector<std::string>& arguments);
+int runSimulateCommand(const std::vector<std::string>& arguments);
 
 }  // namespace stereonav::app

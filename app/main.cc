@@ -17,6 +17,8 @@ struct Command {
 const Command kCommands[] = {
     {"disparity", "disparity image of a rectified rig frame (PFM or 16-bit PNG)",
      stereonav::app::runDisparityCommand},
+    {"simulate", "drive a simulated robot through a world file, recording a rawlog and ground truth",
+     stereonav::app::runSimulateCommand},
 };
 
 void printUsage(std::ostream& out) {

@@ -115,9 +115,12 @@ bool DifferentialDriveRobot::step(double commanded_speed, double commanded_turn_
     }
   }
 
+  // Blocked, the robot still finishes the step's turn on the spot: a disc turning in place
+  // cannot hit anything, and it lets a controller steer away from what it touches.
   const double travelled = free_fraction * distance;
-  const double turned = free_fraction * turn;
-  pose_ = pose_ + arcIncrement(travelled, turned);
+  const double turned = turn;
+  pose_ = pose_ + arcIncrement(travelled, free_fraction * turn) +
+          mrpt::poses::CPose2D(0.0, 0.0, (1.0 - free_fraction) * turn);
   pose_.normalizePhi();
 
   std::normal_distribution<double> unit(0.0, 1.0);
@@ -131,7 +134,6 @@ bool DifferentialDriveRobot::step(double commanded_speed, double commanded_turn_
 
   if (blocked) {
     speed_ = 0.0;
-    turn_rate_ = 0.0;
     if (!in_contact_) ++collisions_;
   }
   in_contact_ = blocked;

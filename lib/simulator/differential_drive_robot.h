@@ -32,8 +32,8 @@ DifferentialDriveOptions loadDifferentialDriveOptions(IniSection& section);
 
 // A differential-drive robot with a circular footprint driving through a World: velocity
 // commands are limited in speed and acceleration, motion is an exact arc, and the body never
-// passes through an obstacle in its height band — it stops at contact and the collision is
-// counted. Odometry integrates the executed motion with seeded random errors, so it drifts from
+// passes through an obstacle in its height band — it stops at contact (still turning on the spot
+// if told to) and the collision is counted. Odometry integrates the executed motion with seeded random errors, so it drifts from
 // the true pose as a real robot's does (paper section 6.1).
 class DifferentialDriveRobot {
  public:

@@ -15,6 +15,15 @@
 
 namespace stereonav {
 
+GroundTruthMapOptions loadGroundTruthMapOptions(IniSection& section) {
+  GroundTruthMapOptions options;
+  options.resolution_m = section.getDouble("resolution_m", options.resolution_m);
+  options.margin_m = section.getDouble("margin_m", options.margin_m);
+  if (!(options.resolution_m > 0.0)) throw ConfigError("[" + section.name() + "] resolution_m: must be positive");
+  if (!(options.margin_m >= 0.0)) throw ConfigError("[" + section.name() + "] margin_m: must be >= 0");
+  return options;
+}
+
 GroundTruthMap::GroundTruthMap(const World& world, const GroundTruthMapOptions& options)
     : resolution_(options.resolution_m) {
   if (!(options.resolution_m > 0.0)) throw ConfigError("ground-truth map: resolution must be positive");

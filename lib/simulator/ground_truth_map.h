@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "common/ini_section.h"
 #include "simulator/world.h"
 
 namespace stereonav {
@@ -16,6 +17,10 @@ struct GroundTruthMapOptions {
   // Unknown cells around the world's bounds, so the map shows where the world ends.
   double margin_m = 0.5;
 };
+
+// Section [ground_truth_map]: resolution_m, margin_m. The height band is the robot's, set by the
+// caller (the simulated robot's height_m).
+GroundTruthMapOptions loadGroundTruthMapOptions(IniSection& section);
 
 // The true occupancy of a World's static solids for a robot of a given height, on a grid with
 // the trinary values of a ROS map_server image.

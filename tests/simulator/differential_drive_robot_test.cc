@@ -72,6 +72,19 @@ TEST(DifferentialDriveRobot, DrivingIntoAWallStopsAtContactAndCountsOneCollision
   EXPECT_EQ(robot.collisionCount(), 2);
 }
 
+TEST(DifferentialDriveRobot, TouchingAWallItStillTurnsOnTheSpot) {
+  const World world = worldFromText("[wall.w]\npoints = 3 -5; 3 5\nthickness = 0.1\n");
+  DifferentialDriveRobot robot(world, exactOdometry(), mrpt::poses::CPose2D(2.65 - 1e-6, 0, 0));
+  robot.step(1.0, 0.0, 0.1, 0.0);
+  ASSERT_TRUE(robot.inContact());
+  const double x = robot.pose().x();
+  // Told to go on forward while turning left at 1 rad/s for 0.5 s: it cannot advance, but turns.
+  for (int i = 0; i < 5; ++i) robot.step(1.0, 1.0, 0.1, 0.1 * (i + 1));
+  EXPECT_NEAR(robot.pose().x(), x, 1e-6);
+  EXPECT_GT(robot.pose().phi(), 0.3);
+  EXPECT_EQ(robot.collisionCount(), 1);
+}
+
 TEST(DifferentialDriveRobot, TableTopStopsATallRobotButNotALowOne) {
   // Top 1.2 x 0.8 at (3, 0), 0.72 high: its near edge is at x = 2.4; legs are off the path.
   const World world = worldFromText("[table.t]\ncenter = 3 0\nsize = 1.2 0.8\n");

@@ -1,0 +1,86 @@
+#include <mrpt/config/CConfigFile.h>
+
+#include <fstream>
+#include <iostream>
+
+#include "command_line.h"
+#include "commands.h"
+#include "common/ini_section.h"
+#include "observations/rawlog_writer.h"
+#include "rig/camera_rig.h"
+#include "simulator/ground_truth_map.h"
+#include "simulator/motion_plan.h"
+#include "simulator/simulation.h"
+#include "simulator/simulation_recorder.h"
+#include "simulator/world_loader.h"
+
+namespace stereonav::app {
+namespace {
+
+constexpr const char* kUsage =
+    "usage: stereonav simulate --world W.ini --config C.ini --path PATH.txt --out OUT.rawlog\n"
+    "                          [--gt-map MAP.yaml]\n"
+    "Drives a simulated robot through the world along PATH.txt (lines 'x y': waypoints, or\n"
+    "'t v w': velocity commands from time t) and records the rig's frames with odometry in\n"
+    "OUT.rawlog, the true pose of every frame in OUT.gt.txt ('t x y phi'), and optionally the\n"
+    "world's true occupancy as a ROS map. C.ini sections: [rig], [sim_sensor], [sim_robot],\n"
+    "[simulation], [rawlog], [ground_truth_map].\n";
+
+// Loads one section of the run configuration with `load`, rejecting keys it does not know;
+// errors name the file.
+template <typename Load>
+auto loadSection(const mrpt::config::CConfigFile& config, const std::string& file, const char* name, Load load) {
+  try {
+    IniSection section(config, name);
+    auto options = load(section);
+    section.rejectUnknownKeys();
+    return options;
+  } catch (const ConfigError& error) {
+    throw ConfigError(file + ": " + error.what());
+  }
+}
+
+}  // namespace
+
+int runSimulateCommand(const std::vector<std::string>& arguments) {
+  CommandLine command_line(arguments, {"help"});
+  if (command_line.flag("help")) {
+    std::cout << kUsage;
+    return 0;
+  }
+  const std::string world_path = command_line.required("world");
+  const std::string config_path = command_line.required("config");
+  const std::string plan_path = command_line.required("path");
+  const std::string rawlog_path = command_line.required("out");
+  const std::optional<std::string> map_path = command_line.value("gt-map");
+  command_line.rejectUnknown();
+
+  const World world = loadWorld(world_path);
+  if (!std::ifstream(config_path)) throw ConfigError(config_path + ": cannot open the configuration file");
+  const mrpt::config::CConfigFile config(config_path);
+  const CameraRig rig = loadSection(config, config_path, "rig", loadCameraRig);
+  const SensorOptions sensor = loadSection(config, config_path, "sim_sensor", loadSensorOptions);
+  const DifferentialDriveOptions robot = loadSection(config, config_path, "sim_robot", loadDifferentialDriveOptions);
+  const SimulationOptions options = loadSection(config, config_path, "simulation", loadSimulationOptions);
+  const RawlogWriterOptions rawlog = loadSection(config, config_path, "rawlog", loadRawlogWriterOptions);
+  GroundTruthMapOptions map_options = loadSection(config, config_path, "ground_truth_map", loadGroundTruthMapOptions);
+  const MotionPlan plan = loadMotionPlan(plan_path);
+
+  SimulationRecorder recorder(rawlog_path, rawlog, rig);
+  Simulation simulation(world, rig, sensor, robot, options);
+  const SimulationSummary summary = simulation.run(plan, [&](const SimulatedFrame& frame) { recorder.record(frame); });
+  recorder.finish();
+  if (map_path) {
+    map_options.band_max_z = robot.height_m;
+    GroundTruthMap(world, map_options).writeRosMap(*map_path);
+  }
+
+  std::cout << "simulated " << summary.frames << " frames over " << summary.duration_s << " s, "
+            << summary.distance_m << " m driven, " << summary.collisions << " collision(s); "
+            << (summary.plan_completed ? "path completed" : "stopped at max_duration_s before the end of the path")
+            << "\nwrote " << rawlog_path << " and " << SimulationRecorder::groundTruthPath(rawlog_path)
+            << (map_path ? " and " + *map_path : "") << "\n";
+  return 0;
+}
+
+}  // namespace stereonav::app
