@@ -31,9 +31,9 @@ void DisparityScanInserter::insert(const DisparityScan& scan, const DisparitySca
   grid.growToInclude(model_.bounds(readings_, camera, camera_pose), growth_margin_m_);
   model_.rasterize(readings_, camera, camera_pose, grid.frame(), raster_);
 
-  const CellSpan* spans = raster_.spans.data();
+  const CellSpan* spans = raster_.spans.begin();
+  clearCells(spans + raster_.clear_begin, raster_.spans.end(), grid);
   for (const ReadingSpans& reading : raster_.readings) {
-    clearCells(spans + reading.clear_begin, spans + reading.clear_end, grid);
     const CellSpan* occupied_begin = spans + reading.occupied_begin;
     const CellSpan* occupied_end = spans + reading.occupied_end;
     if (occupied_begin == occupied_end) continue;
@@ -45,17 +45,16 @@ void DisparityScanInserter::insert(const DisparityScan& scan, const DisparitySca
   }
 }
 
+// The cell loops below are written so that the compiler vectorises them over long spans.
 void DisparityScanInserter::clearCells(const CellSpan* begin, const CellSpan* end,
                                        DisparityTaggedGrid& grid) const {
-  const int floor = update_.scale.g_min + update_.update_step;
-  const uint8_t g_min = static_cast<uint8_t>(update_.scale.g_min);
-  const uint8_t step = static_cast<uint8_t>(update_.update_step);
+  const int g_min = update_.scale.g_min, step = update_.update_step;
   for (const CellSpan* span = begin; span != end; ++span) {
     int col_begin, col_end;
     if (!clipToGrid(*span, grid, col_begin, col_end)) continue;
     uint8_t* row = grid.occupancyRow(span->row);
     for (int col = col_begin; col < col_end; ++col) {
-      row[col] = row[col] > floor ? static_cast<uint8_t>(row[col] - step) : g_min;
+      row[col] = static_cast<uint8_t>(std::max(row[col] - step, g_min));
     }
   }
 }
@@ -69,25 +68,25 @@ bool DisparityScanInserter::explainedByBetterEvidence(const CellSpan* begin, con
     if (!clipToGrid(*span, grid, col_begin, col_end)) continue;
     const uint8_t* occupancy = grid.occupancyRow(span->row);
     const float* tags = grid.tagRow(span->row);
+    int explaining = 0;  // counted rather than returned at the first: this loop vectorises
     for (int col = col_begin; col < col_end; ++col) {
-      if (occupancy[col] > unknown && tags[col] > disparity) return true;
+      explaining += (occupancy[col] > unknown) & (tags[col] > disparity);
     }
+    if (explaining > 0) return true;
   }
   return false;
 }
 
 void DisparityScanInserter::occupyCells(const CellSpan* begin, const CellSpan* end,
                                         float disparity, DisparityTaggedGrid& grid) const {
-  const int ceiling = update_.scale.g_max - update_.update_step;
-  const uint8_t g_max = static_cast<uint8_t>(update_.scale.g_max);
-  const uint8_t step = static_cast<uint8_t>(update_.update_step);
+  const int g_max = update_.scale.g_max, step = update_.update_step;
   for (const CellSpan* span = begin; span != end; ++span) {
     int col_begin, col_end;
     if (!clipToGrid(*span, grid, col_begin, col_end)) continue;
     uint8_t* occupancy = grid.occupancyRow(span->row);
     float* tags = grid.tagRow(span->row);
     for (int col = col_begin; col < col_end; ++col) {
-      occupancy[col] = occupancy[col] < ceiling ? static_cast<uint8_t>(occupancy[col] + step) : g_max;
+      occupancy[col] = static_cast<uint8_t>(std::min(occupancy[col] + step, g_max));
       tags[col] = disparity;
     }
   }

@@ -46,6 +46,16 @@ mrpt::math::TPoint2D toPoint(const CellPoint& p) { return {p.u, p.v}; }
 
 const GridFrame kMetricFrame{0.0, 0.0, 1.0};
 
+RegionCorners cornersOf(const ColumnReading& reading, const DisparityScanCamera& camera,
+                        const FloorAxes& axes) {
+  const CellPoint left = lineOfSight(axes, camera, reading.column - 0.5);
+  const CellPoint right = lineOfSight(axes, camera, reading.column + 0.5);
+  return {toPoint(pointAtDepth(axes, left, reading.near_depth_m)),
+          toPoint(pointAtDepth(axes, right, reading.near_depth_m)),
+          toPoint(pointAtDepth(axes, left, reading.far_depth_m)),
+          toPoint(pointAtDepth(axes, right, reading.far_depth_m))};
+}
+
 }  // namespace
 
 DisparityScanCamera DisparityScanCamera::fromRig(const CameraRig& rig) {
@@ -94,13 +104,7 @@ void StereoSensorModel::readings(const DisparityScan& scan, const DisparityScanC
 RegionCorners StereoSensorModel::corners(const ColumnReading& reading,
                                          const DisparityScanCamera& camera,
                                          const mrpt::poses::CPose2D& camera_floor_pose) const {
-  const FloorAxes axes = floorAxes(camera_floor_pose, kMetricFrame);
-  const CellPoint left = lineOfSight(axes, camera, reading.column - 0.5);
-  const CellPoint right = lineOfSight(axes, camera, reading.column + 0.5);
-  return {toPoint(pointAtDepth(axes, left, reading.near_depth_m)),
-          toPoint(pointAtDepth(axes, right, reading.near_depth_m)),
-          toPoint(pointAtDepth(axes, left, reading.far_depth_m)),
-          toPoint(pointAtDepth(axes, right, reading.far_depth_m))};
+  return cornersOf(reading, camera, floorAxes(camera_floor_pose, kMetricFrame));
 }
 
 WorldBounds StereoSensorModel::bounds(const std::vector<ColumnReading>& readings,
@@ -108,8 +112,9 @@ WorldBounds StereoSensorModel::bounds(const std::vector<ColumnReading>& readings
                                       const mrpt::poses::CPose2D& camera_floor_pose) const {
   WorldBounds bounds{camera_floor_pose.x(), camera_floor_pose.x(), camera_floor_pose.y(),
                      camera_floor_pose.y()};
+  const FloorAxes axes = floorAxes(camera_floor_pose, kMetricFrame);
   for (const ColumnReading& reading : readings) {
-    const RegionCorners c = corners(reading, camera, camera_floor_pose);
+    const RegionCorners c = cornersOf(reading, camera, axes);
     for (const auto& p : {c.near_left, c.near_right, c.far_left, c.far_right}) {
       bounds.min_x = std::min(bounds.min_x, p.x);
       bounds.max_x = std::max(bounds.max_x, p.x);
@@ -126,28 +131,45 @@ void StereoSensorModel::rasterize(const std::vector<ColumnReading>& readings,
                                   const GridFrame& frame, ScanRaster& raster) const {
   raster.readings.clear();
   raster.spans.clear();
+  raster.clear_edges.clear();
   const FloorAxes axes = floorAxes(camera_floor_pose, frame);
-  for (const ColumnReading& reading : readings) {
-    // Both neighbours of a pixel edge compute its line of sight from the same numbers
-    // (x + 0.5 == (x + 1) - 0.5 exactly), so they share the EdgeLine bit for bit.
+  std::vector<ScanEdge>& clear = raster.clear_edges;
+  // Walk the columns from image right to image left: counter-clockwise around the camera. The
+  // CLEAR union's outline runs camera -> near right -> near left -> (along the shared line of
+  // sight) the next column's near right ... -> camera, returning to the camera at every gap.
+  const ColumnReading* previous = nullptr;
+  CellPoint previous_near_left{};
+  CellPoint previous_left{};
+  EdgeLine previous_left_ray{};
+  for (auto it = readings.rbegin(); it != readings.rend(); ++it) {
+    const ColumnReading& reading = *it;
+    // Neighbouring columns share the line of sight through their common pixel edge: the one
+    // to the right hands its left line over (the same numbers it would compute, since
+    // x + 0.5 == (x + 1) - 0.5 exactly), so both sides of the edge use one EdgeLine.
+    const bool adjacent = previous != nullptr && previous->column == reading.column + 1;
+    const CellPoint right = adjacent ? previous_left : lineOfSight(axes, camera, reading.column + 0.5);
+    const EdgeLine right_ray = adjacent ? previous_left_ray : rayLine(axes, right);
     const CellPoint left = lineOfSight(axes, camera, reading.column - 0.5);
-    const CellPoint right = lineOfSight(axes, camera, reading.column + 0.5);
     const EdgeLine left_ray = rayLine(axes, left);
-    const EdgeLine right_ray = rayLine(axes, right);
     const CellPoint near_left = pointAtDepth(axes, left, reading.near_depth_m);
     const CellPoint near_right = pointAtDepth(axes, right, reading.near_depth_m);
     const EdgeLine near_edge = EdgeLine::through(near_left, near_right);
 
-    ReadingSpans spans{reading.disparity, 0, 0, 0, 0};
-    spans.clear_begin = static_cast<uint32_t>(raster.spans.size());
-    ConvexPolygon clear;  // counter-clockwise: camera, near right, near left
-    clear.size = 3;
-    clear.vertices = {axes.centre, near_right, near_left, CellPoint{}};
-    clear.edges = {right_ray, near_edge, left_ray, EdgeLine{}};
-    appendCellSpans(clear, raster.spans);
-    spans.clear_end = static_cast<uint32_t>(raster.spans.size());
+    if (adjacent) {
+      ScanEdge::appendTo(clear, previous_near_left, near_right, right_ray);
+    } else {
+      if (previous != nullptr) {
+        ScanEdge::appendTo(clear, previous_near_left, axes.centre, previous_left_ray);
+      }
+      ScanEdge::appendTo(clear, axes.centre, near_right, right_ray);
+    }
+    ScanEdge::appendTo(clear, near_right, near_left, near_edge);
+    previous = &reading;
+    previous_near_left = near_left;
+    previous_left = left;
+    previous_left_ray = left_ray;
 
-    spans.occupied_begin = spans.clear_end;
+    ReadingSpans spans{reading.disparity, static_cast<uint32_t>(raster.spans.size()), 0};
     if (reading.hasOccupiedRegion()) {
       const CellPoint far_left = pointAtDepth(axes, left, reading.far_depth_m);
       const CellPoint far_right = pointAtDepth(axes, right, reading.far_depth_m);
@@ -160,6 +182,11 @@ void StereoSensorModel::rasterize(const std::vector<ColumnReading>& readings,
     spans.occupied_end = static_cast<uint32_t>(raster.spans.size());
     raster.readings.push_back(spans);
   }
+  if (previous != nullptr) {
+    ScanEdge::appendTo(clear, previous_near_left, axes.centre, previous_left_ray);
+  }
+  raster.clear_begin = raster.spans.size();
+  appendPolygonSpans(clear, raster.spans);
 }
 
 }  // namespace stereonav

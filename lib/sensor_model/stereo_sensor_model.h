@@ -9,7 +9,7 @@
 
 #include "column_projection/disparity_scan.h"
 #include "rig/camera_rig.h"
-#include "sensor_model/convex_polygon_rasterizer.h"
+#include "sensor_model/polygon_rasterizer.h"
 #include "sensor_model/sensor_model_options.h"
 
 namespace stereonav {
@@ -70,27 +70,29 @@ struct WorldBounds {
   double max_y;
 };
 
-// One reading's cells: spans [clear_begin, clear_end) and [occupied_begin, occupied_end) of
-// ScanRaster::spans.
+// One reading's OCC cells: spans [occupied_begin, occupied_end) of ScanRaster::spans.
 struct ReadingSpans {
   float disparity;
-  uint32_t clear_begin;
-  uint32_t clear_end;
   uint32_t occupied_begin;
   uint32_t occupied_end;
 };
 
-// A whole scan rasterised. Reused from scan to scan so that its vectors keep their capacity.
+// A whole scan rasterised. The CLEAR regions of all readings tile one star-shaped area around
+// the camera, so they are rasterised together as one polygon (far fewer rows than triangle by
+// triangle) into spans [clear_begin, spans.size()); each cell appears at most once per scan.
+// Reused from scan to scan so that its buffers keep their capacity.
 struct ScanRaster {
   std::vector<ReadingSpans> readings;
-  std::vector<CellSpan> spans;
+  CellSpanBuffer spans;
+  size_t clear_begin = 0;
+  std::vector<ScanEdge> clear_edges;  // scratch
 };
 
 // The stereo sensor model of paper section 3.2: each column's disparity becomes a trapezoid
 // region of uncertainty (OCC) and a clear triangle (CLEAR) on the floor, rasterised exactly into
 // grid cells (a cell belongs to a region when its centre does; see appendCellSpans). Adjacent
 // columns share their boundary rays, so one scan's regions never overlap: every cell gets at
-// most one update per scan.
+// most one update per scan, and the CLEAR triangles can be filled as their union.
 class StereoSensorModel {
  public:
   explicit StereoSensorModel(const SensorModelOptions& options) : options_(options) {}

@@ -49,11 +49,11 @@ RasterCells rasterCells(const StereoSensorModel& model, const DisparityScanCamer
   ScanRaster raster;
   model.rasterize(readings, cam, robot_pose + cameraFloorPose(cam.pose_on_robot), frame, raster);
   RasterCells cells;
+  for (size_t i = raster.clear_begin; i < raster.spans.size(); ++i) {
+    const CellSpan& s = raster.spans[i];
+    for (int col = s.col_begin; col < s.col_end; ++col) cells.clear.insert({col, s.row});
+  }
   for (const ReadingSpans& reading : raster.readings) {
-    for (uint32_t i = reading.clear_begin; i < reading.clear_end; ++i) {
-      const CellSpan& s = raster.spans[i];
-      for (int col = s.col_begin; col < s.col_end; ++col) cells.clear.insert({col, s.row});
-    }
     for (uint32_t i = reading.occupied_begin; i < reading.occupied_end; ++i) {
       const CellSpan& s = raster.spans[i];
       for (int col = s.col_begin; col < s.col_end; ++col) cells.occupied.insert({col, s.row});
@@ -258,12 +258,10 @@ TEST(StereoSensorModelTest, AScanTilesItsWedgesWithoutOverlapsOrGaps) {
 
   std::map<std::pair<int, int>, int> hits;
   size_t occupied_cells = 0;
-  for (const ReadingSpans& reading : raster.readings) {
-    for (uint32_t i = reading.clear_begin; i < reading.occupied_end; ++i) {
-      const CellSpan& s = raster.spans[i];
-      for (int col = s.col_begin; col < s.col_end; ++col) ++hits[{col, s.row}];
-      if (i >= reading.occupied_begin) occupied_cells += s.col_end - s.col_begin;
-    }
+  for (size_t i = 0; i < raster.spans.size(); ++i) {
+    const CellSpan& s = raster.spans[i];
+    for (int col = s.col_begin; col < s.col_end; ++col) ++hits[{col, s.row}];
+    if (i < raster.clear_begin) occupied_cells += s.col_end - s.col_begin;
   }
   for (const auto& [cell, count] : hits) EXPECT_EQ(count, 1) << cell.first << "," << cell.second;
 

@@ -1,0 +1,126 @@
+#include "sensor_model/polygon_rasterizer.h"
+
+#include <algorithm>
+
+namespace stereonav {
+
+namespace {
+
+// ceil for values well inside the int range (the polygon lies on the grid); std::ceil is a
+// library call without SSE4.1 and this runs twice per span.
+inline int ceilToInt(double x) {
+  const int truncated = static_cast<int>(x);
+  return truncated + (truncated < x ? 1 : 0);
+}
+
+}  // namespace
+
+void appendCellSpans(const ConvexPolygon& polygon, CellSpanBuffer& spans) {
+  int bottom = 0, top = 0;
+  double u_min = polygon.vertices[0].u, u_max = u_min;
+  for (int i = 1; i < polygon.size; ++i) {
+    const CellPoint& p = polygon.vertices[i];
+    if (p.v < polygon.vertices[bottom].v) bottom = i;
+    if (p.v > polygon.vertices[top].v) top = i;
+    u_min = std::min(u_min, p.u);
+    u_max = std::max(u_max, p.u);
+  }
+  const double v_max = polygon.vertices[top].v;
+  if (!(v_max > polygon.vertices[bottom].v)) return;  // degenerate: a horizontal segment or a point
+
+  // Counter-clockwise, the interior is on the left of every edge: walking forwards from the
+  // lowest vertex climbs the right side (u <= edge), backwards the left side (u >= edge). Rows
+  // are in when their centre j + 0.5 is in [v_min, v_max), cells when i + 0.5 is in
+  // [u_low, u_high): so a centre on an edge goes to the polygon right of / above it. Shared
+  // edges are evaluated from the same EdgeLine by both polygons, so they agree to the bit.
+  // Nearly horizontal edges evaluate far outside the polygon near their ends; the vertices'
+  // u-range keeps the interval sane.
+  const auto next = [&](int vertex, int step) {
+    const int n = vertex + step;  // no modulo: an integer division per step is noticeable here
+    return n < 0 ? polygon.size - 1 : (n == polygon.size ? 0 : n);
+  };
+  int right_from = bottom;
+  int right_to = next(bottom, +1), left_to = next(bottom, -1);
+  int row = ceilToInt(polygon.vertices[bottom].v - 0.5);
+  const int row_end = ceilToInt(v_max - 0.5);
+  // Rows come in stretches between vertex heights, over which both sides keep one edge.
+  while (row < row_end) {
+    const double v_row = row + 0.5;
+    while (right_to != top && polygon.vertices[right_to].v < v_row) {
+      right_from = right_to;
+      right_to = next(right_to, +1);
+    }
+    while (left_to != top && polygon.vertices[left_to].v < v_row) left_to = next(left_to, -1);
+    // Edge i runs from vertex i to i + 1, so the left side's edge (walked j -> j - 1) is j - 1.
+    const EdgeLine& right = polygon.edges[right_from];
+    const EdgeLine& left = polygon.edges[left_to];
+    const double stretch_top =
+        std::min(polygon.vertices[right_to].v, polygon.vertices[left_to].v);
+    const int stretch_end = std::min(row_end, std::max(row + 1, ceilToInt(stretch_top - 0.5)));
+    CellSpan* out = spans.room(static_cast<size_t>(stretch_end - row));
+    for (; row < stretch_end; ++row) {
+      const double v = row + 0.5;
+      const int col_begin = ceilToInt(std::max(u_min, left.uAt(v)) - 0.5);
+      const int col_end = ceilToInt(std::min(u_max, right.uAt(v)) - 0.5);
+      *out = {row, col_begin, col_end};
+      out += col_end > col_begin ? 1 : 0;  // branchless: empty rows are overwritten
+    }
+    spans.commit(out);
+  }
+}
+
+void appendPolygonSpans(std::vector<ScanEdge>& edges, CellSpanBuffer& spans) {
+  if (edges.empty()) return;
+  std::sort(edges.begin(), edges.end(),
+            [](const ScanEdge& a, const ScanEdge& b) { return a.v_low < b.v_low; });
+  double v_max = edges.front().v_high;
+  for (const ScanEdge& edge : edges) v_max = std::max(v_max, edge.v_high);
+
+  struct Crossing {
+    double u;
+    int winding;
+  };
+  // Edges crossing the current row: an edge is in for centres v with v_low <= v < v_high.
+  std::vector<const ScanEdge*> active;
+  std::vector<Crossing> crossings;
+  size_t next_edge = 0;
+  const int row_end = ceilToInt(v_max - 0.5);
+  for (int row = ceilToInt(edges.front().v_low - 0.5); row < row_end; ++row) {
+    const double v = row + 0.5;
+    while (next_edge < edges.size() && edges[next_edge].v_low <= v) {
+      active.push_back(&edges[next_edge++]);
+    }
+    crossings.clear();
+    for (size_t i = 0; i < active.size();) {
+      if (active[i]->v_high <= v) {
+        active[i] = active.back();
+        active.pop_back();
+        continue;
+      }
+      const ScanEdge& edge = *active[i];
+      const Crossing crossing{std::clamp(edge.line.uAt(v), edge.u_low, edge.u_high), edge.winding};
+      auto at = crossings.end();  // insertion sort: a handful of crossings per row
+      while (at != crossings.begin() && (at - 1)->u > crossing.u) --at;
+      crossings.insert(at, crossing);
+      ++i;
+    }
+    int winding = 0;
+    double entered = 0.0;
+    for (const Crossing& crossing : crossings) {
+      const int before = winding;
+      winding += crossing.winding;
+      if (before <= 0 && winding > 0) entered = crossing.u;
+      if (before > 0 && winding <= 0) {
+        const int col_begin = ceilToInt(entered - 0.5);
+        const int col_end = ceilToInt(crossing.u - 0.5);
+        if (col_end > col_begin) {
+          CellSpan* out = spans.room(1);
+          *out = {row, col_begin, col_end};
+          spans.commit(out + 1);
+        }
+      }
+    }
+  }
+}
+
+}  // namespace stereonav
