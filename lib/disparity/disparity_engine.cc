@@ -3,32 +3,42 @@
 #include <string>
 
 #include "disparity/opencv_matchers.h"
-#include "disparity/sad_matcher.h"
 #include "disparity/validation.h"
 
 namespace stereonav {
 
-cv::Mat1f computeDisparity(const StereoFrame& frame, const StereoOptions& options) {
+StereoMatcher::StereoMatcher(const StereoOptions& options)
+    : options_(options),
+      reference_matcher_(options),
+      swapped_matcher_(options.left_right_check ? std::make_unique<SadMatcher>(options) : nullptr) {}
+
+void StereoMatcher::compute(const StereoFrame& frame, cv::Mat1f& disparity) {
   checkStereoFrame(frame);
-  validateStereoOptions(options);
-  if (options.max_disparity >= frame.reference.cols) {
-    throw ConfigError("[stereo] max_disparity: " + std::to_string(options.max_disparity) +
+  if (options_.max_disparity >= frame.reference.cols) {
+    throw ConfigError("[stereo] max_disparity: " + std::to_string(options_.max_disparity) +
                       " is not smaller than the image width " + std::to_string(frame.reference.cols));
   }
-  if (options.backend != StereoBackend::kSad) return matchOpenCv(frame, options);
-
-  const SadMatch match = matchSad(frame, options);
-  cv::Mat1f disparity = match.disparity;
-  if (options.texture_threshold > 0) {
-    rejectLowTexture(disparity, textureMap(frame.reference, options.window, options.texture_sigma),
-                     options.texture_threshold);
+  if (options_.backend != StereoBackend::kSad) {
+    matchOpenCv(frame, options_).copyTo(disparity);
+    return;
   }
-  rejectAmbiguousMatches(disparity, match, options.uniqueness_threshold);
-  if (options.left_right_check) {
-    const SadMatch swapped = matchSad(swapReferenceWithFirstSecondary(frame), options);
+  const SadMatch& match = reference_matcher_.match(frame);
+  match.disparity.copyTo(disparity);
+  if (options_.texture_threshold > 0) {
+    textureMap(frame.reference, options_.window, options_.texture_sigma, texture_);
+    rejectLowTexture(disparity, texture_, options_.texture_threshold);
+  }
+  rejectAmbiguousMatches(disparity, match, options_.uniqueness_threshold);
+  if (swapped_matcher_) {
+    const SadMatch& swapped = swapped_matcher_->match(swapReferenceWithFirstSecondary(frame));
     rejectInconsistentMatches(disparity, swapped.disparity, frame.secondaries.front().camera,
-                              options.left_right_max_diff);
+                              options_.left_right_max_diff);
   }
+}
+
+cv::Mat1f computeDisparity(const StereoFrame& frame, const StereoOptions& options) {
+  cv::Mat1f disparity;
+  StereoMatcher(options).compute(frame, disparity);
   return disparity;
 }
 

@@ -9,6 +9,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 #include "disparity/disparity_image.h"
 #include "disparity/prefilter.h"
@@ -43,6 +44,7 @@ struct BilinearTap {
 // disparity runs forward in memory. Other cameras (fractional, longer or diagonal baselines) are
 // interpolated into a per-row table; for them origin/x_step/y_step address pixel (x, y) itself.
 struct CandidateSource {
+  cv::Mat1b filtered, transposed, flipped;  // the prefiltered image and its rearrangements
   cv::Mat1b buffer;  // padded by the frame's margin
   ptrdiff_t origin = 0;
   ptrdiff_t x_step = 0;
@@ -53,6 +55,7 @@ struct CandidateSource {
 };
 
 struct PreparedFrame {
+  cv::Mat1b filtered_reference;
   cv::Mat1b reference;  // prefiltered, padded by margin
   std::vector<CandidateSource> sources;
   int margin = 0;
@@ -71,23 +74,27 @@ struct MatchRegion {
   std::vector<int> cameras;
 };
 
-CandidateSource makeCandidateSource(const cv::Mat1b& image, const SecondaryCamera& camera,
-                                    const PreparedFrame& frame) {
+// Fills `source` for one secondary camera, reusing its buffers when the frame size is unchanged.
+void prepareCandidateSource(const cv::Mat1b& image, const SecondaryCamera& camera, const PreparedFrame& frame,
+                            CandidateSource& source) {
   const int width = image.cols, height = image.rows, margin = frame.margin;
   const bool horizontal_unit = camera.by == 0.0 && std::abs(camera.bx) == 1.0;
   const bool vertical_unit = camera.bx == 0.0 && std::abs(camera.by) == 1.0;
+  const bool flip = (horizontal_unit && camera.bx > 0) || (vertical_unit && camera.by > 0);
   cv::Mat1b arranged = image;
-  if (vertical_unit) cv::transpose(image, arranged);
-  if ((horizontal_unit && camera.bx > 0) || (vertical_unit && camera.by > 0)) {
-    cv::Mat1b flipped;
-    cv::flip(arranged, flipped, 1);
-    arranged = flipped;
+  if (vertical_unit) {
+    cv::transpose(image, source.transposed);
+    arranged = source.transposed;
   }
-  CandidateSource source;
+  if (flip) {
+    cv::flip(arranged, source.flipped, 1);
+    arranged = source.flipped;
+  }
   cv::copyMakeBorder(arranged, source.buffer, margin, margin, margin, margin, cv::BORDER_REPLICATE);
   const ptrdiff_t step = static_cast<ptrdiff_t>(source.buffer.step);
   const ptrdiff_t corner = margin * step + margin;  // pixel (0, 0) of `arranged`
   const int min_d = frame.min_disparity;
+  source.taps.clear();
   if (horizontal_unit && camera.bx < 0) {  // (x + d, y)
     source.origin = corner + min_d;
     source.x_step = 1;
@@ -130,7 +137,6 @@ CandidateSource makeCandidateSource(const cv::Mat1b& image, const SecondaryCamer
       source.taps.push_back(tap);
     }
   }
-  return source;
 }
 
 // Reference rows or columns [lo, hi] whose candidates at every disparity lie inside the image
@@ -178,43 +184,57 @@ std::vector<MatchRegion> matchRegions(const StereoFrame& frame, int min_d, int m
   return regions;
 }
 
-// The vector type that accumulates scores: 16-bit when the largest possible window score fits,
-// 32-bit otherwise.
+// The vector type that accumulates scores: 16-bit when the largest possible window score fits in
+// an int16 (SSE2 compares and takes minima of signed 16-bit lanes natively), 32-bit otherwise.
 template <typename Acc>
 struct AccumulatorLanes;
 
 template <>
-struct AccumulatorLanes<uint16_t> {
-  using Vec = cv::v_uint16x8;
+struct AccumulatorLanes<int16_t> {
+  using Vec = cv::v_int16x8;
   static constexpr int kCount = 8;
-  static void widen(const cv::v_uint8x16& bytes, Vec* out) { cv::v_expand(bytes, out[0], out[1]); }
-  static cv::v_uint32x4 widenSum(const Vec& v) {
-    cv::v_uint32x4 low, high;
-    cv::v_expand(v, low, high);
-    return low + high;
+  static void widen(const cv::v_uint8x16& bytes, Vec* out) {
+    cv::v_uint16x8 low, high;
+    cv::v_expand(bytes, low, high);
+    out[0] = cv::v_reinterpret_as_s16(low);
+    out[1] = cv::v_reinterpret_as_s16(high);
   }
-  static Vec all(unsigned value) { return cv::v_setall_u16(static_cast<ushort>(value)); }
   // OpenCV's 16-bit + and - saturate; running sums need modular arithmetic, which is exact as
   // long as the true result fits.
+  static Vec add(const Vec& a, const Vec& b) { return cv::v_add_wrap(a, b); }
   static Vec slide(const Vec& sum, const Vec& entering, const Vec& leaving) {
     return cv::v_sub_wrap(cv::v_add_wrap(sum, entering), leaving);
   }
+  // Pairwise 32-bit sums of the lanes (one multiply-add instruction).
+  static cv::v_int32x4 widenSum(const Vec& v) { return cv::v_dotprod(v, cv::v_setall_s16(1)); }
+  static Vec all(int value) { return cv::v_setall_s16(static_cast<short>(value)); }
 };
 
 template <>
-struct AccumulatorLanes<uint32_t> {
-  using Vec = cv::v_uint32x4;
+struct AccumulatorLanes<int32_t> {
+  using Vec = cv::v_int32x4;
   static constexpr int kCount = 4;
   static void widen(const cv::v_uint8x16& bytes, Vec* out) {
     cv::v_uint16x8 low, high;
     cv::v_expand(bytes, low, high);
-    cv::v_expand(low, out[0], out[1]);
-    cv::v_expand(high, out[2], out[3]);
+    cv::v_uint32x4 parts[4];
+    cv::v_expand(low, parts[0], parts[1]);
+    cv::v_expand(high, parts[2], parts[3]);
+    for (int i = 0; i < 4; ++i) out[i] = cv::v_reinterpret_as_s32(parts[i]);
   }
-  static cv::v_uint32x4 widenSum(const Vec& v) { return v; }
-  static Vec all(unsigned value) { return cv::v_setall_u32(value); }
+  static Vec add(const Vec& a, const Vec& b) { return a + b; }
   static Vec slide(const Vec& sum, const Vec& entering, const Vec& leaving) { return sum + entering - leaving; }
+  static cv::v_int32x4 widenSum(const Vec& v) { return v; }
+  static Vec all(int value) { return cv::v_setall_s32(value); }
 };
+
+// Grows `buffer` if needed (buffers are reused from call to call: frames of one size need no new
+// memory) and returns its start.
+template <typename T>
+T* scratch(std::vector<T>& buffer, size_t size) {
+  if (buffer.size() < size) buffer.resize(size);
+  return buffer.data();
+}
 
 template <typename Acc>
 void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch& out) {
@@ -222,6 +242,7 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
   using Vec = typename Lanes::Vec;
   constexpr int kVectorsPerBytes = kByteLanes / Lanes::kCount;
   constexpr Acc kMaxScore = std::numeric_limits<Acc>::max();
+  constexpr int kChunksPerMask = 64 / Lanes::kCount;
 
   const int r = frame.radius, window = 2 * r + 1, margin = frame.margin;
   const int disparities = frame.disparities, padded = frame.padded_disparities;
@@ -233,27 +254,31 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
   const int groups = frame.best_half && cameras > 1 ? cameras : 1;
   const int kept = groups == 1 ? 1 : (cameras + 1) / 2;
 
-  std::vector<Acc> ring(static_cast<size_t>(groups) * window * row_size, 0);
-  std::vector<Acc> column_sums(static_cast<size_t>(groups) * row_size, 0);
-  std::vector<Acc> scores(static_cast<size_t>(groups) * padded, 0);
-  std::vector<Acc> combined(padded, 0);
-  std::vector<uchar> tables(static_cast<size_t>(cameras) * row_size);
+  thread_local std::vector<Acc> ring_buffer, column_sum_buffer, score_buffer, combined_buffer;
+  thread_local std::vector<uchar> table_buffer;
+  Acc* const ring = scratch(ring_buffer, groups * window * row_size);
+  std::fill(ring, ring + groups * window * row_size, Acc{0});  // nothing leaves before the first rows
+  // Column xe of group g is at column_sums + g * column_stride + (xe + 1) * padded; column -1 stays
+  // zero, so the first pixel of a row slides its window in like every other one.
+  const size_t column_stride = row_size + padded;
+  Acc* const column_sums = scratch(column_sum_buffer, groups * column_stride);
+  std::fill(column_sums, column_sums + groups * column_stride, Acc{0});
+  Acc* const scores = scratch(score_buffer, static_cast<size_t>(groups) * padded);
+  Acc* const combined = scratch(combined_buffer, padded);
+  uchar* const tables = scratch(table_buffer, cameras * row_size);
 
   const int chunks = padded / Lanes::kCount;
   const int whole_chunks = disparities / Lanes::kCount;  // chunks without padding lanes
-  std::vector<Vec> chunk_index(chunks), padding(chunks);
-  for (int chunk = 0; chunk < chunks; ++chunk) {
-    Acc index[Lanes::kCount], pad[Lanes::kCount];
-    for (int lane = 0; lane < Lanes::kCount; ++lane) {
-      index[lane] = static_cast<Acc>(chunk * Lanes::kCount + lane);
-      pad[lane] = chunk * Lanes::kCount + lane < disparities ? 0 : kMaxScore;
-    }
-    chunk_index[chunk] = cv::v_load(index);
-    padding[chunk] = cv::v_load(pad);
+  // Only the chunks of the last byte vector can hold padding lanes: there, kMaxScore.
+  Vec padding[kVectorsPerBytes];
+  for (int chunk = whole_chunks; chunk < chunks; ++chunk) {
+    Acc pad[Lanes::kCount];
+    for (int lane = 0; lane < Lanes::kCount; ++lane) pad[lane] = chunk * Lanes::kCount + lane < disparities ? 0 : kMaxScore;
+    padding[chunk - whole_chunks] = cv::v_load(pad);
   }
 
-  std::vector<const uchar*> candidates(cameras);
-  std::vector<ptrdiff_t> candidate_x_step(cameras);
+  const uchar* candidates[kMaxCameras];
+  ptrdiff_t candidate_x_step[kMaxCameras];
 
   // Absolute differences of reference row yy against every candidate, into the ring slot of
   // row yy, updating the column sums by (entering row - leaving row).
@@ -268,7 +293,7 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
         candidate_x_step[c] = source.x_step;
         continue;
       }
-      uchar* table = tables.data() + c * row_size;
+      uchar* table = tables + c * row_size;
       const ptrdiff_t step = static_cast<ptrdiff_t>(source.buffer.step);
       for (int xe = 0; xe < nx; ++xe) {
         const uchar* pixel = pixel_row + (x0 - r + xe);
@@ -285,8 +310,8 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
     }
     for (int g = 0; g < groups; ++g) {
       const int first = groups == 1 ? 0 : g, last = groups == 1 ? cameras : g + 1;
-      Acc* ring_row = ring.data() + (static_cast<size_t>(g) * window + slot) * row_size;
-      Acc* sums = column_sums.data() + g * row_size;
+      Acc* ring_row = ring + (static_cast<size_t>(g) * window + slot) * row_size;
+      Acc* sums = column_sums + g * column_stride + padded;
       for (int xe = 0; xe < nx; ++xe) {
         const int x = x0 - r + xe;
         const cv::v_uint8x16 reference = cv::v_setall_u8(reference_row[x]);
@@ -297,7 +322,7 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
           for (int c = first + 1; c < last; ++c) {
             Vec more[kVectorsPerBytes];
             Lanes::widen(cv::v_absdiff(reference, cv::v_load(candidates[c] + x * candidate_x_step[c] + b)), more);
-            for (int i = 0; i < kVectorsPerBytes; ++i) entering[i] += more[i];
+            for (int i = 0; i < kVectorsPerBytes; ++i) entering[i] = Lanes::add(entering[i], more[i]);
           }
           Acc* slot_entry = ring_row + static_cast<size_t>(xe) * padded + b;
           Acc* sum_entry = sums + static_cast<size_t>(xe) * padded + b;
@@ -313,96 +338,129 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
   };
 
   // Horizontal running sum of the column sums, winner-takes-all and sum of scores for row y.
-  const auto matchRow = [&](int y) {
+  const bool subpixel = frame.subpixel;
+  const int min_disparity = frame.min_disparity;
+  const auto matchRow = [&](int y, auto combine_groups) {
+    constexpr bool kCombine = decltype(combine_groups)::value;
     for (int g = 0; g < groups; ++g) {
-      const Acc* sums = column_sums.data() + g * row_size;
+      // The window of the first pixel minus its last column, which the first slide brings in.
+      const Acc* sums = column_sums + g * column_stride;
       for (int b = 0; b < padded; b += Lanes::kCount) {
         Vec total = Lanes::all(0);
-        for (int xe = 0; xe < window; ++xe) total += cv::v_load(sums + static_cast<size_t>(xe) * padded + b);
-        cv::v_store(scores.data() + g * padded + b, total);
+        for (int xe = 0; xe < window - 1; ++xe) {
+          total = Lanes::add(total, cv::v_load(sums + static_cast<size_t>(xe + 1) * padded + b));
+        }
+        cv::v_store(scores + g * padded + b, total);
       }
     }
+    const Acc* curve = kCombine ? combined : scores;  // the combined score of every candidate
     float* disparity_row = out.disparity.ptr<float>(y);
     int* best_row = out.best_score.ptr<int>(y);
     int* sum_row = out.score_sum.ptr<int>(y);
     Vec sorted[kMaxCameras];
     for (int x = region.x0; x < region.x1; ++x) {
-      const int xe = x - x0;
-      const bool slide = x > region.x0;
-      Vec best = Lanes::all(kMaxScore), best_index = Lanes::all(0);
-      cv::v_uint32x4 score_sum = cv::v_setall_u32(0);
+      // Columns entering and leaving the window, relative to each group's column sums.
+      const size_t entering = static_cast<size_t>(x - x0 + 2 * r + 1) * padded;
+      const size_t leaving = static_cast<size_t>(x - x0) * padded;
+      Vec best = Lanes::all(kMaxScore);
+      cv::v_int32x4 score_sum = cv::v_setall_s32(0);
       for (int chunk = 0; chunk < chunks; ++chunk) {
         const int b = chunk * Lanes::kCount;
         Vec score;
         for (int g = 0; g < groups; ++g) {
-          Acc* group_score = scores.data() + g * padded + b;
-          Vec value = cv::v_load(group_score);
-          if (slide) {
-            const Acc* sums = column_sums.data() + g * row_size;
-            value = Lanes::slide(value, cv::v_load(sums + static_cast<size_t>(xe + 2 * r) * padded + b),
-                                 cv::v_load(sums + static_cast<size_t>(xe - 1) * padded + b));
-            cv::v_store(group_score, value);
-          }
-          if (groups == 1) {
+          Acc* group_score = scores + g * padded + b;
+          const Acc* sums = column_sums + g * column_stride + b;
+          Vec value = Lanes::slide(cv::v_load(group_score), cv::v_load(sums + entering), cv::v_load(sums + leaving));
+          cv::v_store(group_score, value);
+          if constexpr (!kCombine) {
             score = value;
-            continue;
+          } else {
+            // Insert into the `kept` lowest so far (a min/max insertion network).
+            for (int k = 0; k < std::min(g, kept); ++k) {
+              const Vec low = cv::v_min(sorted[k], value);
+              value = cv::v_max(sorted[k], value);
+              sorted[k] = low;
+            }
+            if (g < kept) sorted[g] = value;
           }
-          // Insert into the `kept` lowest so far (a min/max insertion network).
-          for (int k = 0; k < std::min(g, kept); ++k) {
-            const Vec low = cv::v_min(sorted[k], value);
-            value = cv::v_max(sorted[k], value);
-            sorted[k] = low;
-          }
-          if (g < kept) sorted[g] = value;
         }
-        if (groups > 1) {
+        if constexpr (kCombine) {
           score = sorted[0];
-          for (int k = 1; k < kept; ++k) score += sorted[k];
-          cv::v_store(combined.data() + b, score);
+          for (int k = 1; k < kept; ++k) score = Lanes::add(score, sorted[k]);
+          cv::v_store(combined + b, score);
         }
         if (chunk >= whole_chunks) {
-          score_sum += Lanes::widenSum(score & ~padding[chunk]);
-          score = score | padding[chunk];
+          // Scores are never negative: OR with the all-ones-but-sign padding makes those lanes
+          // the largest score, AND with its complement makes them zero.
+          const Vec& pad = padding[chunk - whole_chunks];
+          score_sum += Lanes::widenSum(score & ~pad);
+          score = score | pad;
         } else {
           score_sum += Lanes::widenSum(score);
         }
-        const Vec better = score < best;
         best = cv::v_min(best, score);
-        best_index = cv::v_select(better, chunk_index[chunk], best_index);
       }
+      // The lowest score, then the first (smallest) disparity that has it: the lanes equal to it
+      // as a bit mask, 64 candidates at a time, without data-dependent branches inside a block.
       const Acc best_score = static_cast<Acc>(cv::v_reduce_min(best));
-      const int j = static_cast<int>(
-          cv::v_reduce_min(cv::v_select(best == Lanes::all(best_score), best_index, Lanes::all(kMaxScore))));
-      float disparity = static_cast<float>(frame.min_disparity + j);
-      if (frame.subpixel && j > 0 && j < disparities - 1) {
-        const Acc* curve = groups == 1 ? scores.data() : combined.data();
+      const Vec wanted = Lanes::all(best_score);
+      int j = 0;
+      for (int block = 0; block < chunks; block += kChunksPerMask) {
+        uint64_t hits = 0;
+        const int block_end = std::min(chunks, block + kChunksPerMask);
+        for (int chunk = block; chunk < block_end; ++chunk) {
+          const uint64_t lanes = static_cast<uint64_t>(cv::v_signmask(cv::v_load(curve + chunk * Lanes::kCount) == wanted));
+          hits |= lanes << ((chunk - block) * Lanes::kCount);
+        }
+        if (hits) {
+          j = block * Lanes::kCount + __builtin_ctzll(hits);
+          break;
+        }
+      }
+      float disparity = static_cast<float>(min_disparity + j);
+      if (subpixel && j > 0 && j < disparities - 1) {
         const double before = curve[j - 1], after = curve[j + 1];
         const double curvature = before + after - 2.0 * best_score;
         if (curvature > 0) disparity += static_cast<float>(0.5 * (before - after) / curvature);
       }
       disparity_row[x] = disparity;
       best_row[x] = static_cast<int>(best_score);
-      sum_row[x] = static_cast<int>(cv::v_reduce_sum(score_sum));
+      sum_row[x] = cv::v_reduce_sum(score_sum);
     }
   };
 
   for (int yy = region.y0 - r; yy < region.y0 + r; ++yy) enterRow(yy);
   for (int y = region.y0; y < region.y1; ++y) {
     enterRow(y + r);
-    matchRow(y);
+    if (groups == 1) {
+      matchRow(y, std::false_type{});
+    } else {
+      matchRow(y, std::true_type{});
+    }
   }
 }
 
 }  // namespace
 
-SadMatch matchSad(const StereoFrame& frame, const StereoOptions& options) {
+struct SadMatcher::Workspace {
+  PreparedFrame prepared;
+  SadMatch result;
+};
+
+SadMatcher::SadMatcher(const StereoOptions& options) : options_(options), workspace_(std::make_unique<Workspace>()) {
+  validateStereoOptions(options_);
+}
+
+SadMatcher::~SadMatcher() = default;
+
+const SadMatch& SadMatcher::match(const StereoFrame& frame) {
   checkStereoFrame(frame);
-  validateStereoOptions(options);
   if (frame.secondaries.size() > kMaxCameras) {
     throw std::invalid_argument("stereo frame: at most " + std::to_string(kMaxCameras) + " secondary views");
   }
+  const StereoOptions& options = options_;
   const int width = frame.reference.cols, height = frame.reference.rows;
-  PreparedFrame prepared;
+  PreparedFrame& prepared = workspace_->prepared;
   prepared.radius = options.window / 2;
   prepared.min_disparity = options.min_disparity;
   prepared.disparities = options.disparityCount();
@@ -410,26 +468,32 @@ SadMatch matchSad(const StereoFrame& frame, const StereoOptions& options) {
   prepared.margin = prepared.radius + prepared.padded_disparities + 2;
   prepared.best_half = options.combination == CameraCombination::kBestHalf;
   prepared.subpixel = options.subpixel;
-  const auto prefilter = [&](const cv::Mat1b& image) {
-    return prefilterImage(image, options.prefilter, options.prefilter_cap, options.texture_sigma);
+  const auto prefilter = [&](const cv::Mat1b& image, cv::Mat1b& filtered) {
+    prefilterImage(image, options.prefilter, options.prefilter_cap, options.texture_sigma, filtered);
   };
-  cv::copyMakeBorder(prefilter(frame.reference), prepared.reference, prepared.margin, prepared.margin,
+  prefilter(frame.reference, prepared.filtered_reference);
+  cv::copyMakeBorder(prepared.filtered_reference, prepared.reference, prepared.margin, prepared.margin,
                      prepared.margin, prepared.margin, cv::BORDER_REPLICATE);
-  for (const SecondaryView& view : frame.secondaries) {
-    prepared.sources.push_back(makeCandidateSource(prefilter(view.image), view.camera, prepared));
+  prepared.sources.resize(frame.secondaries.size());
+  for (size_t c = 0; c < frame.secondaries.size(); ++c) {
+    CandidateSource& source = prepared.sources[c];
+    prefilter(frame.secondaries[c].image, source.filtered);
+    prepareCandidateSource(source.filtered, frame.secondaries[c].camera, prepared, source);
   }
 
-  SadMatch match;
+  SadMatch& match = workspace_->result;
   match.disparity.create(height, width);
   match.disparity.setTo(kInvalidDisparity);
-  match.best_score = cv::Mat1i::zeros(height, width);
-  match.score_sum = cv::Mat1i::zeros(height, width);
+  match.best_score.create(height, width);
+  match.best_score.setTo(0);
+  match.score_sum.create(height, width);
+  match.score_sum.setTo(0);
 
   const std::vector<MatchRegion> regions = matchRegions(frame, options.min_disparity, options.max_disparity);
   const long long largest_score = static_cast<long long>(options.window) * options.window *
                                   maxPrefilteredDifference(options.prefilter, options.prefilter_cap) *
                                   static_cast<long long>(frame.secondaries.size());
-  const bool narrow = largest_score <= std::numeric_limits<uint16_t>::max();
+  const bool narrow = largest_score <= std::numeric_limits<int16_t>::max();
   const int stripes = std::min(options.threads, height);
   const auto matchStripes = [&](const cv::Range& range) {
     for (int stripe = range.start; stripe < range.end; ++stripe) {
@@ -439,9 +503,9 @@ SadMatch matchSad(const StereoFrame& frame, const StereoOptions& options) {
         region.y1 = std::min(region.y1, bottom);
         if (region.y0 >= region.y1) continue;
         if (narrow) {
-          matchRegion<uint16_t>(prepared, region, match);
+          matchRegion<int16_t>(prepared, region, match);
         } else {
-          matchRegion<uint32_t>(prepared, region, match);
+          matchRegion<int32_t>(prepared, region, match);
         }
       }
     }

@@ -2,6 +2,8 @@
 
 #include <opencv2/core.hpp>
 
+#include <memory>
+
 #include "disparity/stereo_frame.h"
 #include "disparity/stereo_options.h"
 
@@ -24,7 +26,23 @@ struct SadMatch {
 // over a options.window square and combined across cameras (options.combination).
 // Near the borders, where some cameras' candidates leave the image, the remaining cameras are
 // used. Uses options.min_disparity, max_disparity, window, prefilter*, combination, subpixel and
-// threads; validation is separate (disparity/validation.h).
-SadMatch matchSad(const StereoFrame& frame, const StereoOptions& options);
+// threads; validation is separate (disparity/validation.h). Like cv::StereoBM, one matcher keeps
+// its buffers from frame to frame, so a stream of same-size frames allocates nothing.
+class SadMatcher {
+ public:
+  explicit SadMatcher(const StereoOptions& options);  // throws ConfigError for bad options
+  ~SadMatcher();
+  SadMatcher(const SadMatcher&) = delete;
+  SadMatcher& operator=(const SadMatcher&) = delete;
+
+  // The match of `frame`. Its images are the matcher's own: the next call overwrites them
+  // (clone them to keep them). Throws std::invalid_argument for a bad frame.
+  const SadMatch& match(const StereoFrame& frame);
+
+ private:
+  struct Workspace;
+  StereoOptions options_;
+  std::unique_ptr<Workspace> workspace_;
+};
 
 }  // namespace stereonav

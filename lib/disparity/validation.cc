@@ -9,12 +9,12 @@
 
 namespace stereonav {
 
-cv::Mat1f textureMap(const cv::Mat1b& reference, int window, double sigma) {
-  const cv::Mat1f magnitude = cv::abs(laplacianOfGaussian(reference, sigma));
-  cv::Mat1f texture;
+void textureMap(const cv::Mat1b& reference, int window, double sigma, cv::Mat1f& texture) {
+  thread_local cv::Mat1f magnitude;  // scratch, reused from call to call
+  laplacianOfGaussian(reference, sigma, magnitude);
+  magnitude = cv::abs(magnitude);
   cv::boxFilter(magnitude, texture, CV_32F, cv::Size(window, window), cv::Point(-1, -1), true,
                 cv::BORDER_REPLICATE);
-  return texture;
 }
 
 void rejectLowTexture(cv::Mat1f& disparity, const cv::Mat1f& texture, double threshold) {

@@ -11,8 +11,9 @@ namespace stereonav {
 // place; each is tuned by one threshold, trading quantity of data for quality.
 
 // Mean of |Laplacian of Gaussian| of the reference image over a window x window square, in grey
-// levels: low in untextured patches, whose matches are ambiguous.
-cv::Mat1f textureMap(const cv::Mat1b& reference, int window, double sigma);
+// levels: low in untextured patches, whose matches are ambiguous. `texture` is reused if it
+// already has the right size.
+void textureMap(const cv::Mat1b& reference, int window, double sigma, cv::Mat1f& texture);
 
 // "Sufficient texture" test: rejects pixels whose texture (textureMap) is not above `threshold`.
 void rejectLowTexture(cv::Mat1f& disparity, const cv::Mat1f& texture, double threshold);
@@ -24,7 +25,8 @@ void rejectAmbiguousMatches(cv::Mat1f& disparity, const SadMatch& match, double 
 // Left-right consistency: `swapped` is the disparity image matched with `first` camera as the
 // reference (swapReferenceWithFirstSecondary). A pixel at disparity d is kept only if the pixel
 // it matches in that camera, at (x - bx*d, y - by*d) rounded, found a disparity within
-// `max_difference` of d.
+// `max_difference` of d. Pixels whose match lies where the swapped search cannot see every
+// candidate (within max_disparity of that camera's far border) are rejected too.
 void rejectInconsistentMatches(cv::Mat1f& disparity, const cv::Mat1f& swapped, const SecondaryCamera& first,
                                double max_difference);
 

@@ -55,7 +55,7 @@ TEST_P(PlanesAtKnownDisparityTest, FindsBothPlanes) {
   SyntheticScene scene(kSize, 4.0, 7);
   scene.addPlane(kPlane, 10.0);
   const StereoFrame frame = renderFrame(scene, GetParam().cameras);
-  const SadMatch match = matchSad(frame, matchOptions());
+  const SadMatch match = SadMatcher(matchOptions()).match(frame);
   // Occlusions reach 2 * (10 - 4) pixels from the plane's outline for the longest baselines.
   EXPECT_GE(shareCorrect(match.disparity, scene.trueDisparity(), awayFromEdges(16, GetParam().border)), 0.99)
       << GetParam().name;
@@ -85,9 +85,9 @@ TEST(SadMatcherTest, HalfBaselineInterpolatesHalfPixelShifts) {
   scene.addPlane(kPlane, 11.0);
   const StereoFrame frame = renderFrame(scene, {{0.5, 0}});
   StereoOptions options = matchOptions();
-  EXPECT_GE(shareCorrect(matchSad(frame, options).disparity, scene.trueDisparity(), awayFromEdges(8, 12), 1.0), 0.99);
+  EXPECT_GE(shareCorrect(SadMatcher(options).match(frame).disparity, scene.trueDisparity(), awayFromEdges(8, 12), 1.0), 0.99);
   options.prefilter = Prefilter::kNone;
-  EXPECT_GE(shareCorrect(matchSad(frame, options).disparity, scene.trueDisparity(), awayFromEdges(8, 12)), 0.99);
+  EXPECT_GE(shareCorrect(SadMatcher(options).match(frame).disparity, scene.trueDisparity(), awayFromEdges(8, 12)), 0.99);
 }
 
 TEST(SadMatcherTest, SubpixelRefinementRecoversFractionalDisparity) {
@@ -95,9 +95,9 @@ TEST(SadMatcherTest, SubpixelRefinementRecoversFractionalDisparity) {
   const StereoFrame frame = renderFrame(scene, {{1, 0}});
   StereoOptions options = matchOptions();
   const cv::Mat1b interior = rectMask(kSize, cv::Rect(25, 10, 80, 70));
-  const SadMatch whole = matchSad(frame, options);
+  const SadMatch whole = SadMatcher(options).match(frame);
   options.subpixel = true;
-  const SadMatch refined = matchSad(frame, options);
+  const SadMatch refined = SadMatcher(options).match(frame);
   double whole_error = 0.0, refined_error = 0.0;
   for (int y = 10; y < 80; ++y) {
     for (int x = 25; x < 105; ++x) {
@@ -161,7 +161,7 @@ void expectMatchesBruteForce(const std::vector<SecondaryCamera>& cameras, Stereo
     images.push_back(image);
   }
   options.prefilter = Prefilter::kNone;  // compare raw grey levels
-  const SadMatch match = matchSad(frame, options);
+  const SadMatch match = SadMatcher(options).match(frame);
   const bool best_half = options.combination == CameraCombination::kBestHalf;
   // Points where every camera of the cases below sees every candidate.
   for (const cv::Point& p : {cv::Point(40, 30), cv::Point(38, 40), cv::Point(45, 25)}) {
@@ -212,9 +212,9 @@ TEST(SadMatcherTest, BestHalfMatchesOccludedStripsThatTheSumGetsWrong) {
   cv::Mat1b strips = rectMask(kSize, cv::Rect(kPlane.x - 6, kPlane.y + 4, 6, kPlane.height - 8));
   strips(cv::Rect(kPlane.br().x, kPlane.y + 4, 6, kPlane.height - 8)).setTo(255);
   StereoOptions options = matchOptions();
-  const double sum_correct = shareCorrect(matchSad(frame, options).disparity, scene.trueDisparity(), strips);
+  const double sum_correct = shareCorrect(SadMatcher(options).match(frame).disparity, scene.trueDisparity(), strips);
   options.combination = CameraCombination::kBestHalf;
-  const double best_half_correct = shareCorrect(matchSad(frame, options).disparity, scene.trueDisparity(), strips);
+  const double best_half_correct = shareCorrect(SadMatcher(options).match(frame).disparity, scene.trueDisparity(), strips);
   // Pixels whose window straddles the plane's edge stay hard for both (about 0.73 vs 0.82 here).
   EXPECT_GT(best_half_correct, sum_correct + 0.05);
   EXPECT_GT(best_half_correct, 0.75);
@@ -223,7 +223,7 @@ TEST(SadMatcherTest, BestHalfMatchesOccludedStripsThatTheSumGetsWrong) {
 TEST(SadMatcherTest, BordersUseTheCamerasThatStillSeeEveryCandidate) {
   SyntheticScene scene(kSize, 6.0, 13);
   const StereoFrame frame = renderFrame(scene, {{-1, 0}, {0, -1}});  // Triclops L: left and top
-  const SadMatch match = matchSad(frame, matchOptions());
+  const SadMatch match = SadMatcher(matchOptions()).match(frame);
   const cv::Mat1f truth = scene.trueDisparity();
   const int w = kSize.width, h = kSize.height, max_d = 15;
   // Right strip: the left camera's candidates leave the image, the top camera's do not.
@@ -239,9 +239,9 @@ TEST(SadMatcherTest, ThreadsGiveTheSameResult) {
   scene.addPlane(kPlane, 10.0);
   const StereoFrame frame = renderFrame(scene, {{-1, 0}, {0, -1}});
   StereoOptions options = matchOptions();
-  const SadMatch single = matchSad(frame, options);
+  const SadMatch single = SadMatcher(options).match(frame);
   options.threads = 3;
-  const SadMatch striped = matchSad(frame, options);
+  const SadMatch striped = SadMatcher(options).match(frame);
   EXPECT_EQ(cv::norm(single.best_score, striped.best_score, cv::NORM_INF), 0.0);
   EXPECT_EQ(cv::norm(single.score_sum, striped.score_sum, cv::NORM_INF), 0.0);
   cv::Mat1f a = single.disparity.clone(), b = striped.disparity.clone();

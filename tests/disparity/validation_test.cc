@@ -30,11 +30,12 @@ StereoOptions unvalidated() {
 StereoFrame binocular(SyntheticScene& scene) { return {scene.view(0, 0), {{scene.view(1, 0), {1, 0}}}}; }
 
 TEST(TextureMapTest, IsZeroOnAFlatImageAndHighOnTexture) {
-  const cv::Mat1f flat = textureMap(cv::Mat1b(40, 40, uchar{90}), 7, 1.0);
+  cv::Mat1f flat, textured;
+  textureMap(cv::Mat1b(40, 40, uchar{90}), 7, 1.0, flat);
   EXPECT_EQ(cv::norm(flat, cv::NORM_INF), 0.0);
   cv::Mat1b stripes(40, 40);
   for (int x = 0; x < 40; ++x) stripes.col(x).setTo((x / 2) % 2 ? 200 : 50);
-  const cv::Mat1f textured = textureMap(stripes, 7, 1.0);
+  textureMap(stripes, 7, 1.0, textured);
   double lowest = 0.0;
   cv::minMaxLoc(textured, &lowest);
   EXPECT_GT(lowest, 10.0);
