@@ -9,5 +9,6 @@ namespace stereonav::app {
 // Each lives in its own <name>_command.cc and is listed in main.cc.
 int runDisparityCommand(const std::vector<std::string>& arguments);
 int runSimulateCommand(const std::vector<std::string>& arguments);
+int runMapCommand(const std::vector<std::string>& arguments);
 
 }  // namespace stereonav::app

@@ -19,6 +19,8 @@ const Command kCommands[] = {
      stereonav::app::runDisparityCommand},
     {"simulate", "drive a simulated robot through a world file, recording a rawlog and ground truth",
      stereonav::app::runSimulateCommand},
+    {"map", "replay a rawlog through the stereo mapping pipeline into an occupancy grid",
+     stereonav::app::runMapCommand},
 };
 
 void printUsage(std::ostream& out) {

@@ -1,0 +1,77 @@
+#include <unistd.h>
+
+#include <cstdio>
+#include <iostream>
+#include <optional>
+
+#include "command_line.h"
+#include "commands.h"
+#include "mapping/mapping_options.h"
+#include "mapping/progress_meter.h"
+#include "mapping/rawlog_mapping.h"
+#include "mapping/sigint_stop.h"
+
+namespace stereonav::app {
+namespace {
+
+constexpr const char* kUsage =
+    "usage: stereonav map --config FILE.ini --rawlog IN.rawlog --out PREFIX\n"
+    "                     [--debug-panels DIR] [--virtual-scans OUT.rawlog]\n"
+    "                     [--use-ground-truth-poses GT.txt]\n"
+    "Replays a recorded run through the stereo mapping pipeline (sections [rig] [rawlog] [stereo]\n"
+    "[spike_removal] [projection] [grid] [mapping] of FILE.ini), robot poses from the rawlog's\n"
+    "odometry (or GT.txt: 't x y phi' per frame, as 'stereonav simulate' writes), and writes\n"
+    "PREFIX.gridmap (MRPT COccupancyGridMap2D), PREFIX.png, PREFIX.yaml + PREFIX.pgm (ROS),\n"
+    "PREFIX.3Dscene (map and path, for SceneViewer3D) and PREFIX.stats.json; optionally one debug\n"
+    "panel PNG per frame in DIR, and a rawlog of virtual laser scans with odometry for icp-slam\n"
+    "(ini/icp_slam_virtual_scans.ini).\n"
+    "A damaged rawlog is mapped up to the damage; Ctrl-C stops after the current frame. Both\n"
+    "still write every output.\n"
+    "Exit status: 0 the whole rawlog was mapped; 3 partial map (damaged rawlog or Ctrl-C),\n"
+    "outputs written; 2 usage error; 1 any other error.\n";
+
+constexpr int kPartialMapStatus = 3;
+
+}  // namespace
+
+int runMapCommand(const std::vector<std::string>& arguments) {
+  CommandLine command_line(arguments, {"help"});
+  if (command_line.flag("help")) {
+    std::cout << kUsage;
+    return 0;
+  }
+  const std::string config_path = command_line.required("config");
+  MappingJob job;
+  job.rawlog_path = command_line.required("rawlog");
+  job.output_prefix = command_line.required("out");
+  job.debug_panel_directory = command_line.value("debug-panels").value_or("");
+  job.virtual_scan_rawlog = command_line.value("virtual-scans").value_or("");
+  const std::optional<std::string> poses_path = command_line.value("use-ground-truth-poses");
+  command_line.rejectUnknown();
+
+  const MappingOptions options = loadMappingOptionsFile(config_path);
+  if (poses_path) job.ground_truth_poses = loadPoseList(*poses_path);
+
+  const bool interactive = isatty(STDERR_FILENO) != 0;
+  std::optional<ProgressMeter> progress;
+  if (interactive) progress.emplace(std::cerr, countRawlogFrames(job.rawlog_path, options));
+  SigintStopRequest sigint;
+  MappingCallbacks callbacks;
+  callbacks.on_frame = [&](size_t frames) {
+    if (progress) progress->update(frames);
+  };
+  callbacks.stop_requested = [&] { return sigint.requested(); };
+
+  const MappingReport report = mapRawlog(options, job, callbacks);
+  if (progress) progress->finish(report.frames_mapped);
+  for (const std::string& warning : report.calibration_warnings) {
+    std::cerr << "stereonav map: calibration: " << warning << "\n";
+  }
+  std::cerr << "stereonav map: " << report.summary() << "\n"
+            << "stereonav map: wrote " << job.output_prefix
+            << ".{gridmap,png,yaml,pgm,3Dscene,stats.json}"
+            << (job.virtual_scan_rawlog.empty() ? "" : " and " + job.virtual_scan_rawlog) << "\n";
+  return report.complete() ? 0 : kPartialMapStatus;
+}
+
+}  // namespace stereonav::app

@@ -1,0 +1,93 @@
+#include "mapping/map_outputs.h"
+
+#include <mrpt/opengl/COpenGLScene.h>
+#include <mrpt/opengl/CSetOfLines.h>
+#include <mrpt/opengl/CSetOfObjects.h>
+#include <mrpt/opengl/stock_objects.h>
+#include <mrpt/poses/CPose3D.h>
+
+#include <cmath>
+#include <stdexcept>
+
+#include "common/atomic_file.h"
+#include "occupancy_grid/grid_io.h"
+#include "occupancy_grid/stereo_occupancy_grid_map.h"
+
+namespace stereonav {
+namespace {
+
+DisparityTaggedGrid fromMrptOccupancyGrid(const mrpt::maps::COccupancyGridMap2D& mrpt_grid,
+                                          const OccupancyScale& scale) {
+  const int width = static_cast<int>(mrpt_grid.getSizeX());
+  const int height = static_cast<int>(mrpt_grid.getSizeY());
+  std::vector<uint8_t> occupancy(static_cast<size_t>(width) * height);
+  for (int row = 0; row < height; ++row) {
+    for (int col = 0; col < width; ++col) {
+      const double p_occupied = 1.0 - mrpt_grid.getCell(col, row);
+      occupancy[static_cast<size_t>(row) * width + col] =
+          static_cast<uint8_t>(std::lround(255.0 * p_occupied));
+    }
+  }
+  const GridFrame frame{mrpt_grid.getXMin(), mrpt_grid.getYMin(), mrpt_grid.getResolution()};
+  std::vector<float> tags(occupancy.size(), DisparityTaggedGrid::kNoTag);
+  DisparityTaggedGrid grid(GridLimits{}, scale);
+  grid.assign(frame, width, height, std::move(occupancy), std::move(tags));
+  return grid;
+}
+
+void saveScene(const mrpt::maps::CMetricMap& map, const std::vector<mrpt::poses::CPose2D>& path,
+               const std::string& scene_path) {
+  mrpt::opengl::COpenGLScene scene;
+  auto map_objects = mrpt::opengl::CSetOfObjects::Create();
+  map.getVisualizationInto(*map_objects);
+  scene.insert(map_objects);
+  scene.insert(mrpt::opengl::stock_objects::CornerXYZSimple(0.5f, 2.0f));
+
+  // Drawn a little above the grid so that the floor does not hide it.
+  constexpr float kPathHeight = 0.02f;
+  const auto point = [&](const mrpt::poses::CPose2D& pose) {
+    return mrpt::math::TPoint3D(pose.x(), pose.y(), kPathHeight);
+  };
+  if (path.size() >= 2) {
+    auto line = mrpt::opengl::CSetOfLines::Create();
+    line->setColor(1.0f, 0.0f, 0.0f);
+    line->setLineWidth(2.0f);
+    line->appendLine(point(path[0]), point(path[1]));
+    for (size_t i = 2; i < path.size(); ++i) line->appendLineStrip(point(path[i]));
+    scene.insert(line);
+  }
+  if (!path.empty()) {
+    auto robot = mrpt::opengl::stock_objects::RobotPioneer();
+    robot->setPose(mrpt::poses::CPose3D(path.back()));
+    scene.insert(robot);
+  }
+  writeFileAtomically(scene_path, [&](const std::string& temporary_path) {
+    if (!scene.saveToFile(temporary_path)) {
+      throw std::runtime_error("cannot write 3D scene '" + scene_path + "'");
+    }
+  });
+}
+
+}  // namespace
+
+DisparityTaggedGrid gridOfMap(const mrpt::maps::CMetricMap& map, const OccupancyScale& scale) {
+  if (const auto* stereo = dynamic_cast<const CStereoOccupancyGridMap*>(&map)) {
+    return stereo->grid();
+  }
+  if (const auto* mrpt_grid = dynamic_cast<const mrpt::maps::COccupancyGridMap2D*>(&map)) {
+    return fromMrptOccupancyGrid(*mrpt_grid, scale);
+  }
+  throw std::invalid_argument("cannot save a map of type " +
+                              std::string(map.GetRuntimeClass()->className));
+}
+
+void saveMapOutputs(const mrpt::maps::CMetricMap& map, const OccupancyScale& scale,
+                    const std::vector<mrpt::poses::CPose2D>& robot_path, const std::string& prefix) {
+  const DisparityTaggedGrid grid = gridOfMap(map, scale);
+  saveMrptGridmap(grid, prefix + ".gridmap");
+  saveGridImage(grid, prefix + ".png");
+  saveRosMapServer(grid, prefix + ".yaml");
+  saveScene(map, robot_path, prefix + ".3Dscene");
+}
+
+}  // namespace stereonav

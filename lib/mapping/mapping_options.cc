@@ -1,0 +1,76 @@
+#include "mapping/mapping_options.h"
+
+#include <mrpt/config/CConfigFile.h>
+
+#include <fstream>
+#include <stdexcept>
+
+#include "observations/rawlog_writer.h"
+
+namespace stereonav {
+namespace {
+
+MapperOptions loadMapperOptions(IniSection& section) {
+  MapperOptions options;
+  options.virtual_scans = section.getBool("virtual_scans", options.virtual_scans);
+  options.panel_range_m = section.getDouble("panel_range_m", options.panel_range_m);
+  if (!(options.panel_range_m > 0.0)) {
+    throw ConfigError("[" + section.name() + "] panel_range_m: must be positive");
+  }
+  return options;
+}
+
+}  // namespace
+
+MappingOptions loadMappingOptions(const mrpt::config::CConfigFileBase& config) {
+  MappingOptions options;
+  if (config.sectionExists("rig")) {
+    IniSection rig(config, "rig");
+    options.rig = loadCameraRig(rig);
+    rig.rejectUnknownKeys();
+  }
+  {
+    IniSection rawlog(config, "rawlog");
+    const bool follow_named_pair = rawlog.has("sensor_label");
+    const RawlogWriterOptions writer = loadRawlogWriterOptions(rawlog);
+    if (follow_named_pair) options.sensor_label = writer.sensor_label;
+    options.calibration_tolerance = loadCalibrationTolerance(rawlog);
+    rawlog.rejectUnknownKeys();
+  }
+  {
+    IniSection stereo(config, "stereo");
+    options.stereo = loadStereoOptions(stereo);
+    stereo.rejectUnknownKeys();
+  }
+  {
+    IniSection spike_removal(config, "spike_removal");
+    options.spike_removal = loadSpikeRemovalOptions(spike_removal);
+    spike_removal.rejectUnknownKeys();
+  }
+  {
+    IniSection projection(config, "projection");
+    options.projection = loadProjectionOptions(projection);
+    projection.rejectUnknownKeys();
+  }
+  {
+    IniSection grid(config, "grid");
+    options.grid = loadGridMapOptions(grid);
+  }
+  {
+    IniSection mapper(config, "mapping");
+    options.mapper = loadMapperOptions(mapper);
+    mapper.rejectUnknownKeys();
+  }
+  return options;
+}
+
+MappingOptions loadMappingOptionsFile(const std::string& path) {
+  if (!std::ifstream(path)) throw std::runtime_error(path + ": cannot read config file");
+  try {
+    return loadMappingOptions(mrpt::config::CConfigFile(path));
+  } catch (const ConfigError& error) {
+    throw ConfigError(path + ": " + error.what());
+  }
+}
+
+}  // namespace stereonav

@@ -1,0 +1,35 @@
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "mapping/stage_times.h"
+#include "observations/rawlog_reader.h"
+
+namespace stereonav {
+
+// What a rawlog replay did, for the user (summary line) and for scripts (PREFIX.stats.json).
+struct MappingReport {
+  std::string rawlog_path;
+  size_t frames_mapped = 0;
+  size_t frames_without_odometry = 0;  // mapped at the previous frame's pose
+  SkippedFrames skipped;
+  std::optional<RawlogDamage> damage;  // where reading stopped, if the rawlog is damaged
+  bool interrupted = false;            // stopped by request (Ctrl-C) after a whole frame
+  std::vector<std::string> calibration_warnings;
+  // Fractions of all pixels of all mapped frames: with a stereo match, and kept by spike removal.
+  double matched_pixel_fraction = 0.0;
+  double kept_pixel_fraction = 0.0;
+  StageTimes times;             // the per-frame pipeline only
+  double wall_seconds = 0.0;    // the whole replay: decoding, pipeline, panels
+
+  bool complete() const { return !damage && !interrupted; }
+  // Frames per second of the pipeline alone (0 before any frame).
+  double pipelineFramesPerSecond() const;
+  // E.g. "mapped 60 frames (41.2 frames/s; pipeline 3.9 ms/frame); stopped at damage: ...".
+  std::string summary() const;
+  std::string toJson() const;
+};
+
+}  // namespace stereonav
