@@ -208,6 +208,10 @@ struct AccumulatorLanes<int16_t> {
   // Pairwise 32-bit sums of the lanes (one multiply-add instruction).
   static cv::v_int32x4 widenSum(const Vec& v) { return cv::v_dotprod(v, cv::v_setall_s16(1)); }
   static Vec all(int value) { return cv::v_setall_s16(static_cast<short>(value)); }
+  // Sign bits of a's lanes then b's (lanes of comparison masks are 0 or -1).
+  static unsigned packedSignMask(const Vec& a, const Vec& b) {
+    return static_cast<unsigned>(cv::v_signmask(cv::v_pack(a, b)));
+  }
 };
 
 template <>
@@ -226,6 +230,9 @@ struct AccumulatorLanes<int32_t> {
   static Vec slide(const Vec& sum, const Vec& entering, const Vec& leaving) { return sum + entering - leaving; }
   static cv::v_int32x4 widenSum(const Vec& v) { return v; }
   static Vec all(int value) { return cv::v_setall_s32(value); }
+  static unsigned packedSignMask(const Vec& a, const Vec& b) {
+    return static_cast<unsigned>(cv::v_signmask(cv::v_pack(a, b)));
+  }
 };
 
 // Grows `buffer` if needed (buffers are reused from call to call: frames of one size need no new
@@ -236,13 +243,32 @@ T* scratch(std::vector<T>& buffer, size_t size) {
   return buffer.data();
 }
 
+// Index of the first of the `chunks` * kCount scores equal to `wanted` (one must be): the
+// comparison masks of 64 lanes at a time are packed into one bit mask, so there is no
+// data-dependent branch inside a block.
+template <typename Lanes, typename Acc>
+CV_ALWAYS_INLINE int firstLaneEqual(const Acc* scores, int chunks, const typename Lanes::Vec& wanted) {
+  constexpr int kChunksPerBlock = 64 / Lanes::kCount;
+  for (int block = 0; block < chunks; block += kChunksPerBlock) {
+    const int block_chunks = std::min(chunks - block, kChunksPerBlock);
+    uint64_t hits = 0;
+    for (int chunk = 0; chunk < block_chunks; chunk += 2) {
+      const Acc* first = scores + (block + chunk) * Lanes::kCount;
+      const typename Lanes::Vec a = cv::v_load(first) == wanted;
+      const typename Lanes::Vec b = chunk + 1 < block_chunks ? cv::v_load(first + Lanes::kCount) == wanted : Lanes::all(0);
+      hits |= static_cast<uint64_t>(Lanes::packedSignMask(a, b)) << (chunk * Lanes::kCount);
+    }
+    if (hits) return block * Lanes::kCount + __builtin_ctzll(hits);
+  }
+  return 0;
+}
+
 template <typename Acc>
 void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch& out) {
   using Lanes = AccumulatorLanes<Acc>;
   using Vec = typename Lanes::Vec;
   constexpr int kVectorsPerBytes = kByteLanes / Lanes::kCount;
   constexpr Acc kMaxScore = std::numeric_limits<Acc>::max();
-  constexpr int kChunksPerMask = 64 / Lanes::kCount;
 
   const int r = frame.radius, window = 2 * r + 1, margin = frame.margin;
   const int disparities = frame.disparities, padded = frame.padded_disparities;
@@ -403,20 +429,7 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
       // The lowest score, then the first (smallest) disparity that has it: the lanes equal to it
       // as a bit mask, 64 candidates at a time, without data-dependent branches inside a block.
       const Acc best_score = static_cast<Acc>(cv::v_reduce_min(best));
-      const Vec wanted = Lanes::all(best_score);
-      int j = 0;
-      for (int block = 0; block < chunks; block += kChunksPerMask) {
-        uint64_t hits = 0;
-        const int block_end = std::min(chunks, block + kChunksPerMask);
-        for (int chunk = block; chunk < block_end; ++chunk) {
-          const uint64_t lanes = static_cast<uint64_t>(cv::v_signmask(cv::v_load(curve + chunk * Lanes::kCount) == wanted));
-          hits |= lanes << ((chunk - block) * Lanes::kCount);
-        }
-        if (hits) {
-          j = block * Lanes::kCount + __builtin_ctzll(hits);
-          break;
-        }
-      }
+      const int j = firstLaneEqual<Lanes>(curve, chunks, Lanes::all(best_score));
       float disparity = static_cast<float>(min_disparity + j);
       if (subpixel && j > 0 && j < disparities - 1) {
         const double before = curve[j - 1], after = curve[j + 1];

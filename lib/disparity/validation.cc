@@ -24,12 +24,14 @@ void rejectLowTexture(cv::Mat1f& disparity, const cv::Mat1f& texture, double thr
 
 void rejectAmbiguousMatches(cv::Mat1f& disparity, const SadMatch& match, double threshold) {
   CV_Assert(disparity.size() == match.best_score.size() && disparity.size() == match.score_sum.size());
+  const float ratio = static_cast<float>(threshold);
   for (int y = 0; y < disparity.rows; ++y) {
     float* row = disparity.ptr<float>(y);
     const int* best = match.best_score.ptr<int>(y);
     const int* sum = match.score_sum.ptr<int>(y);
     for (int x = 0; x < disparity.cols; ++x) {
-      if (!(best[x] < threshold * sum[x])) row[x] = kInvalidDisparity;
+      // Branch-free, so the compiler vectorises it.
+      row[x] = static_cast<float>(best[x]) < ratio * static_cast<float>(sum[x]) ? row[x] : kInvalidDisparity;
     }
   }
 }
