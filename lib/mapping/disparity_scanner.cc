@@ -24,8 +24,7 @@ size_t countValid(const cv::Mat1f& disparity) {
 DisparityScanner::DisparityScanner(const CameraRig& rig, const StereoOptions& stereo,
                                    const SpikeRemovalOptions& spike_removal,
                                    const ProjectionOptions& projection)
-    : rig_(rig), stereo_(stereo), spike_filter_(spike_removal), projector_(rig, projection) {
-  validateStereoOptions(stereo_);
+    : rig_(rig), matcher_(stereo), spike_filter_(spike_removal), projector_(rig, projection) {
   grey_buffers_.resize(rig_.secondaries.size() + 1);
   stereo_frame_.secondaries.resize(rig_.secondaries.size());
   for (size_t i = 0; i < rig_.secondaries.size(); ++i) {
@@ -64,7 +63,7 @@ const DisparityScan& DisparityScanner::scan(const RigFrame& frame, StageTimes& t
   }
   {
     ScopedStageTimer timer(times, PipelineStage::kStereo);
-    disparity_ = computeDisparity(stereo_frame_, stereo_);
+    matcher_.compute(stereo_frame_, disparity_);
   }
   {
     ScopedStageTimer timer(times, PipelineStage::kSpikeRemoval);

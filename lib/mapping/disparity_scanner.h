@@ -7,8 +7,8 @@
 
 #include "column_projection/column_projector.h"
 #include "column_projection/disparity_scan.h"
+#include "disparity/disparity_engine.h"
 #include "disparity/stereo_frame.h"
-#include "disparity/stereo_options.h"
 #include "mapping/stage_times.h"
 #include "observations/rig_frame.h"
 #include "rig/camera_rig.h"
@@ -46,7 +46,7 @@ class DisparityScanner {
   void toGrey(const cv::Mat& image, cv::Mat1b& buffer, cv::Mat1b& grey) const;
 
   CameraRig rig_;
-  StereoOptions stereo_;
+  StereoMatcher matcher_;
   SpikeFilter spike_filter_;
   ColumnProjector projector_;
   std::vector<cv::Mat1b> grey_buffers_;  // camera 0 = reference, k = secondary k-1

@@ -1,0 +1,154 @@
+#include "mapping/stereo_mapper.h"
+
+#include <gtest/gtest.h>
+#include <mrpt/maps/COccupancyGridMap2D.h>
+
+#include <cmath>
+
+#include "occupancy_grid/stereo_occupancy_grid_map.h"
+#include "synthetic_scene.h"
+
+namespace stereonav {
+namespace {
+
+using testing::SyntheticScene;
+using testing::Wall;
+
+constexpr double kWallX = 2.0;
+
+// A textured wall across the robot's view, kWallX metres ahead of the robot's start.
+SyntheticScene wallAhead() { return SyntheticScene({Wall{kWallX, -3.0, kWallX, 3.0}}); }
+
+// Occupancy G of the paper's grid, or 255 (1 - p_free) of MRPT's, at world point (x, y).
+double occupancyAt(const mrpt::maps::CMetricMap& map, double x, double y) {
+  if (const auto* stereo = dynamic_cast<const CStereoOccupancyGridMap*>(&map)) {
+    int col, row;
+    EXPECT_TRUE(stereo->grid().cellAt(x, y, col, row));
+    return stereo->grid().occupancy(col, row);
+  }
+  const auto& grid = dynamic_cast<const mrpt::maps::COccupancyGridMap2D&>(map);
+  return 255.0 * (1.0 - grid.getPos(static_cast<float>(x), static_cast<float>(y)));
+}
+
+// Most occupied value on the segment x in [x0, x1] at height y (the wall's cells, whatever the
+// quantisation of the disparity puts them at within one grid cell either side).
+double maxOccupancyAlong(const mrpt::maps::CMetricMap& map, double x0, double x1, double y) {
+  double highest = 0.0;
+  for (double x = x0; x <= x1; x += 0.01) highest = std::max(highest, occupancyAt(map, x, y));
+  return highest;
+}
+
+// `farthest_camera_x`: where the camera got closest to the wall; every point checked for free
+// space is seen from there within 30 degrees of the optical axis, well inside the 45 degree
+// half field of view.
+void expectWallMapped(const mrpt::maps::CMetricMap& map, double wall_x, double farthest_camera_x = 0.0) {
+  for (const double y : {-0.6, -0.3, 0.0, 0.3, 0.6}) {
+    SCOPED_TRACE("y = " + std::to_string(y));
+    // Occupied (G > 150, the paper's "definitely obstructed") within a cell of the wall.
+    EXPECT_GT(maxOccupancyAlong(map, wall_x - 0.1, wall_x + 0.1, y), 150.0);
+    // Free (G < 50) between the robot and the wall.
+    const double first_x = std::max(0.7, farthest_camera_x + std::abs(y) / std::tan(M_PI / 6));
+    for (double x = first_x; x <= wall_x - 0.4; x += 0.1) EXPECT_LT(occupancyAt(map, x, y), 50.0) << x;
+    // Nothing seen behind the wall: unknown.
+    EXPECT_NEAR(occupancyAt(map, wall_x + 1.0, y), 128.0, 1.0);
+  }
+  // Nor anywhere behind the robot.
+  EXPECT_NEAR(occupancyAt(map, -1.0, 0.0), 128.0, 1.0);
+}
+
+MappingOptions optionsFor(GridModel model) {
+  MappingOptions options;
+  options.grid.model = model;
+  return options;
+}
+
+TEST(StereoMapperTest, LinearGridMapsAWallAheadOccupiedAndTheFloorBeforeItFree) {
+  const SyntheticScene scene = wallAhead();
+  StereoMapper mapper(optionsFor(GridModel::kLinear), testing::testRig());
+  // Six readings from a standing robot: six K = 20 steps take G from 128 past both thresholds.
+  for (int i = 0; i < 6; ++i) {
+    mapper.process(scene.renderFrame(testing::testRig(), {}, mrpt::Clock::fromDouble(i)), {});
+  }
+  EXPECT_EQ(mapper.framesMapped(), 6u);
+  expectWallMapped(mapper.map(), kWallX);
+}
+
+TEST(StereoMapperTest, DrivingTowardsTheWallKeepsItWhereItIs) {
+  const SyntheticScene scene = wallAhead();
+  StereoMapper mapper(optionsFor(GridModel::kLinear), testing::testRig());
+  for (int i = 0; i < 8; ++i) {
+    const mrpt::poses::CPose2D pose(0.05 * i, 0.0, 0.0);
+    mapper.process(scene.renderFrame(testing::testRig(), pose, mrpt::Clock::fromDouble(i)), pose);
+  }
+  expectWallMapped(mapper.map(), kWallX, 0.35);
+}
+
+TEST(StereoMapperTest, TurnedRobotMapsTheWallInTheWorldFrame) {
+  // The wall now runs along y = 2 and the robot looks along +y: the map must rotate the scan.
+  const SyntheticScene scene({Wall{-3.0, 2.0, 3.0, 2.0}});
+  StereoMapper mapper(optionsFor(GridModel::kLinear), testing::testRig());
+  const mrpt::poses::CPose2D pose(0.0, 0.0, M_PI / 2);
+  for (int i = 0; i < 6; ++i) {
+    mapper.process(scene.renderFrame(testing::testRig(), pose, mrpt::Clock::fromDouble(i)), pose);
+  }
+  EXPECT_GT(std::max({occupancyAt(mapper.map(), 0.0, 1.95), occupancyAt(mapper.map(), 0.0, 2.0),
+                      occupancyAt(mapper.map(), 0.0, 2.05)}),
+            150.0);
+  EXPECT_LT(occupancyAt(mapper.map(), 0.0, 1.0), 50.0);
+  EXPECT_NEAR(occupancyAt(mapper.map(), 1.0, 0.0), 128.0, 1.0);  // where it did not look
+}
+
+TEST(StereoMapperTest, MrptBayesGridMapsTheSameWallThroughTheVirtualScan) {
+  const SyntheticScene scene = wallAhead();
+  StereoMapper mapper(optionsFor(GridModel::kMrptBayes), testing::testRig());
+  for (int i = 0; i < 6; ++i) {
+    mapper.process(scene.renderFrame(testing::testRig(), {}, mrpt::Clock::fromDouble(i)), {});
+  }
+  ASSERT_NE(mapper.virtualScan(), nullptr);
+  // The straight-ahead ray of the virtual laser measures the wall's distance from the camera.
+  const auto& scan = *mapper.virtualScan();
+  const size_t middle = scan.getScanSize() / 2;
+  ASSERT_TRUE(scan.getScanRangeValidity(middle));
+  EXPECT_NEAR(scan.getScanRange(middle), kWallX, 0.15);
+  expectWallMapped(mapper.map(), kWallX);
+}
+
+TEST(StereoMapperTest, RecordsTimeForEveryStageAndCountsMatchedPixels) {
+  const SyntheticScene scene = wallAhead();
+  MappingOptions options = optionsFor(GridModel::kLinear);
+  options.mapper.virtual_scans = true;
+  StereoMapper mapper(options, testing::testRig());
+  mapper.process(scene.renderFrame(testing::testRig(), {}, mrpt::Clock::fromDouble(0)), {});
+  for (const auto stage : {PipelineStage::kStereo, PipelineStage::kSpikeRemoval,
+                           PipelineStage::kProjection, PipelineStage::kVirtualScan,
+                           PipelineStage::kGridUpdate}) {
+    EXPECT_GT(mapper.times().totalMs(stage), 0.0) << stageName(stage);
+  }
+  // The wall fills the image between the floor and its top edge; floor and sky are flat and
+  // must not match, so matched pixels lie between the wall's rows.
+  const auto& scanner = mapper.scanner();
+  const CameraRig rig = testing::testRig();
+  // Rows of the wall at 2 m: heights 0..2 m from a camera 0.5 m up, y = cy - f (z - 0.5) / 2.
+  const double top_row = rig.reference.cy - rig.reference.focal_px * 1.5 / kWallX;
+  const double bottom_row = rig.reference.cy + rig.reference.focal_px * 0.5 / kWallX;
+  const double wall_fraction = (bottom_row - top_row) / rig.reference.height;
+  EXPECT_GT(scanner.keptPixels(), 0u);
+  EXPECT_LE(scanner.keptPixels(), scanner.matchedPixels());
+  EXPECT_LE(static_cast<double>(scanner.matchedPixels()) / scanner.disparity().total(),
+            wall_fraction + 0.02);
+  EXPECT_GT(static_cast<double>(scanner.keptPixels()) / scanner.disparity().total(),
+            0.5 * wall_fraction);
+}
+
+TEST(StereoMapperTest, RefusesAFrameOfAnotherSize) {
+  const SyntheticScene scene = wallAhead();
+  StereoMapper mapper(optionsFor(GridModel::kLinear), testing::testRig());
+  CameraRig small = testing::testRig();
+  small.reference.width = 160;
+  small.reference.height = 120;
+  EXPECT_THROW(mapper.process(scene.renderFrame(small, {}, mrpt::Clock::fromDouble(0)), {}),
+               std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace stereonav
