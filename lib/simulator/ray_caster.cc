@@ -150,30 +150,35 @@ void RayCaster::castThroughGrid(const Ray& ray, double* best_t, int* best_solid,
     if (ray.origin.z() >= solids_top_z_) return;
     t_end = std::min(t_end, (solids_top_z_ - ray.origin.z()) / dz);
   }
-  // Clip the ray's floor projection to the grid.
+  // Clip the ray's floor projection to the grid. Divisions are few: this runs once per pixel.
+  const double inverse_dx = dx != 0.0 ? 1.0 / dx : 0.0;
+  const double inverse_dy = dy != 0.0 ? 1.0 / dy : 0.0;
   const double grid_x_max = grid_x_min_ + cells_x_ * cell_size_;
   const double grid_y_max = grid_y_min_ + cells_y_ * cell_size_;
   double t_begin = 0.0;
-  const auto clip = [&](double origin, double direction, double low, double high) {
+  const auto clip = [&](double origin, double direction, double inverse, double low, double high) {
     if (direction == 0.0) return origin >= low && origin <= high;
-    double ta = (low - origin) / direction;
-    double tb = (high - origin) / direction;
+    double ta = (low - origin) * inverse;
+    double tb = (high - origin) * inverse;
     if (ta > tb) std::swap(ta, tb);
     t_begin = std::max(t_begin, ta);
     t_end = std::min(t_end, tb);
     return t_begin <= t_end;
   };
-  if (!clip(ox, dx, grid_x_min_, grid_x_max) || !clip(oy, dy, grid_y_min_, grid_y_max)) return;
+  if (!clip(ox, dx, inverse_dx, grid_x_min_, grid_x_max) || !clip(oy, dy, inverse_dy, grid_y_min_, grid_y_max)) {
+    return;
+  }
 
   // The entry point is inside the grid (or on its border), so truncation is the floor here.
-  int ix = std::clamp(static_cast<int>((ox + dx * t_begin - grid_x_min_) / cell_size_), 0, cells_x_ - 1);
-  int iy = std::clamp(static_cast<int>((oy + dy * t_begin - grid_y_min_) / cell_size_), 0, cells_y_ - 1);
+  const double inverse_cell = 1.0 / cell_size_;
+  int ix = std::clamp(static_cast<int>((ox + dx * t_begin - grid_x_min_) * inverse_cell), 0, cells_x_ - 1);
+  int iy = std::clamp(static_cast<int>((oy + dy * t_begin - grid_y_min_) * inverse_cell), 0, cells_y_ - 1);
   const int step_x = dx > 0.0 ? 1 : -1;
   const int step_y = dy > 0.0 ? 1 : -1;
-  const double t_delta_x = dx != 0.0 ? cell_size_ / std::abs(dx) : kNoHit;
-  const double t_delta_y = dy != 0.0 ? cell_size_ / std::abs(dy) : kNoHit;
-  double t_next_x = dx != 0.0 ? (grid_x_min_ + (ix + (dx > 0.0)) * cell_size_ - ox) / dx : kNoHit;
-  double t_next_y = dy != 0.0 ? (grid_y_min_ + (iy + (dy > 0.0)) * cell_size_ - oy) / dy : kNoHit;
+  const double t_delta_x = dx != 0.0 ? cell_size_ * std::abs(inverse_dx) : kNoHit;
+  const double t_delta_y = dy != 0.0 ? cell_size_ * std::abs(inverse_dy) : kNoHit;
+  double t_next_x = dx != 0.0 ? (grid_x_min_ + (ix + (dx > 0.0)) * cell_size_ - ox) * inverse_dx : kNoHit;
+  double t_next_y = dy != 0.0 ? (grid_y_min_ + (iy + (dy > 0.0)) * cell_size_ - oy) * inverse_dy : kNoHit;
 
   if (++ray_number_ == 0) {
     std::fill(tested_by_ray_.begin(), tested_by_ray_.end(), 0);

@@ -43,23 +43,36 @@ double multiScaleNoise(const SurfaceTexture& texture, double u, double v, double
   return sum * 3.0 / std::sqrt(static_cast<double>(texture.scales_m.size()));
 }
 
-// Integral of the unit square wave (1 on the first `duty` of each period) from 0 to s.
-double squareWaveIntegral(double s, double period, double duty) {
+// Second integral of the unit square wave (1 on the first `duty` of each period) from 0 to s,
+// s >= 0: the tent filter below is its second difference.
+double squareWaveSecondIntegral(double s, double period, double duty) {
+  const double lit = duty * period;
   const double cycles = std::floor(s / period);
-  return cycles * duty * period + std::min(s - cycles * period, duty * period);
+  const double r = s - cycles * period;
+  const double whole_cycles = lit * period * cycles * (cycles - 1.0) / 2.0 + cycles * (lit * period - lit * lit / 2.0);
+  const double partial = cycles * lit * r + (r <= lit ? r * r / 2.0 : lit * lit / 2.0 + lit * (r - lit));
+  return whole_cycles + partial;
 }
 
 double stripes(const SurfaceTexture& texture, double u, double v, double footprint) {
+  const double period = texture.period_m;
   const double s = texture.vertical_stripes ? u : v;
+  // Only the phase matters; measuring from a period boundary a few periods back keeps the
+  // integrals small and the arguments non-negative.
+  const double phase = s - std::floor(s / period) * period;
   double lit;
   if (footprint <= 1e-9) {
-    const double phase = s - std::floor(s / texture.period_m) * texture.period_m;
-    lit = phase < texture.duty * texture.period_m ? 1.0 : 0.0;
+    lit = phase < texture.duty * period ? 1.0 : 0.0;
   } else {
-    // Box filter over the footprint, done exactly through the integral of the square wave.
-    lit = (squareWaveIntegral(s + footprint / 2, texture.period_m, texture.duty) -
-           squareWaveIntegral(s - footprint / 2, texture.period_m, texture.duty)) /
-          footprint;
+    // Tent filter of half-width `footprint` (a pixel's footprint blurred by its neighbours'),
+    // done exactly through the second integral: unlike a box filter it leaves no visible moire
+    // when a pixel covers a non-integer number of periods.
+    const double origin = (std::ceil(footprint / period) + 1.0) * period;
+    const double at = origin + phase;
+    lit = (squareWaveSecondIntegral(at + footprint, period, texture.duty) -
+           2.0 * squareWaveSecondIntegral(at, period, texture.duty) +
+           squareWaveSecondIntegral(at - footprint, period, texture.duty)) /
+          (footprint * footprint);
   }
   return 2.0 * lit - 1.0;
 }

@@ -138,6 +138,22 @@ TEST(RigRenderer, IntegerDisparityPixelsMatchExactlyWithoutNoise) {
   EXPECT_GT(deviation[0], 10.0);
 }
 
+TEST(RigRenderer, DetailFinerThanAPixelIsAveragedNotAliased) {
+  // 1 cm stripes 5 m away: a pixel covers 5 cm, five periods. Point sampling would alias them
+  // into a moire of full contrast (0.2 .. 0.8 albedo) that changes with every small motion.
+  const World world = worldFromText(
+      "[texture.fine]\ntype = stripes\nperiod_m = 0.01\nmean = 0.5\ncontrast = 0.3\n"
+      "[wall.w]\npoints = 5.05 -50; 5.05 50\nheight = 50\ntexture = fine\n");
+  RigRenderer renderer(world, smallRig(), noiseless());
+  const cv::Rect wall(0, 0, 160, 55);
+  for (double y : {0.0, 0.003, 0.0071}) {
+    const RigImages images = renderer.render(mrpt::poses::CPose2D(0, y, 0), 0.0);
+    cv::Scalar mean, deviation;
+    cv::meanStdDev(images.reference(wall), mean, deviation);
+    EXPECT_LT(deviation[0], 1.0) << "camera at y = " << y;
+  }
+}
+
 TEST(RigRenderer, NoiseIsSeededAndHasTheRequestedDeviation) {
   const World world = worldFromText("[wall.w]\npoints = 2.55 -50; 2.55 50\nheight = 50\n");
   SensorOptions first;
