@@ -1,10 +1,160 @@
+#include <mrpt/config/CConfigFile.h>
+#include <opencv2/imgcodecs.hpp>
+
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+
 #include "command_line.h"
 #include "commands.h"
+#include "disparity/disparity_engine.h"
+#include "disparity/disparity_evaluation.h"
+#include "disparity/disparity_io.h"
+#include "disparity/stereo_options.h"
 
 namespace stereonav::app {
-int runDisparityCommand(const std::vector<std::string>& arguments) {
-  CommandLine command_line(arguments, {"help"});
-  command_line.rejectUnknown();
-  throw UsageError("not built yet");
+namespace {
+
+constexpr const char* kUsage =
+    "usage: stereonav disparity --config FILE.ini --ref IMG --cam IMG:BX:BY [--cam ...]\n"
+    "                           --out OUT.pfm|OUT.png [--max-disp N] [--window N] [--subpixel]\n"
+    "                           [--backend sad|bm|sgbm] [--gt GT --gt-scale S] [--colour OUT.png]\n"
+    "Disparity image of the reference view (options from the [stereo] section of the ini;\n"
+    "command-line values override it). Each --cam is a secondary view and its baseline: a point\n"
+    "at disparity d at (x, y) in the reference is at (x - BX*d, y - BY*d) in it.\n";
+
+bool endsWith(const std::string& text, const std::string& suffix) {
+  return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
+
+cv::Mat1b readGreyImage(const std::string& path) {
+  // Checked first so that OpenCV does not print its own warning before our one-line error.
+  if (!std::ifstream(path)) throw std::runtime_error(path + ": cannot open image");
+  const cv::Mat image = cv::imread(path, cv::IMREAD_GRAYSCALE);
+  if (image.empty()) throw std::runtime_error(path + ": cannot read image");
+  return image;
+}
+
+// "IMG:BX:BY"; the path itself may contain colons, so the baseline is the last two fields.
+SecondaryView parseCamera(const std::string& text) {
+  const auto malformed = [&] { return UsageError("--cam '" + text + "': expected IMAGE:BX:BY, e.g. right.png:1:0"); };
+  const size_t second = text.rfind(':');
+  if (second == std::string::npos || second == 0) throw malformed();
+  const size_t first = text.rfind(':', second - 1);
+  if (first == std::string::npos || first == 0) throw malformed();
+  SecondaryView view;
+  try {
+    size_t used_x = 0, used_y = 0;
+    const std::string bx = text.substr(first + 1, second - first - 1), by = text.substr(second + 1);
+    view.camera.bx = std::stod(bx, &used_x);
+    view.camera.by = std::stod(by, &used_y);
+    if (used_x != bx.size() || used_y != by.size()) throw malformed();
+  } catch (const std::logic_error&) {
+    throw malformed();
+  }
+  if (view.camera.bx == 0.0 && view.camera.by == 0.0) {
+    throw UsageError("--cam '" + text + "': baseline (0, 0) is the reference camera itself");
+  }
+  view.image = readGreyImage(text.substr(0, first));
+  return view;
+}
+
+StereoOptions loadOptions(const std::string& path) {
+  if (!std::ifstream(path)) throw std::runtime_error(path + ": cannot read config file");
+  mrpt::config::CConfigFile config(path);
+  IniSection section(config, "stereo");
+  StereoOptions options = loadStereoOptions(section);
+  section.rejectUnknownKeys();
+  return options;
+}
+
+}  // namespace
+
+int runDisparityCommand(const std::vector<std::string>& arguments) {
+  CommandLine command_line(arguments, {"help", "subpixel"});
+  if (command_line.flag("help")) {
+    std::cout << kUsage;
+    return 0;
+  }
+  const std::string config_path = command_line.required("config");
+  const std::string reference_path = command_line.required("ref");
+  const std::vector<std::string> cameras = command_line.values("cam");
+  const std::string out_path = command_line.required("out");
+  const auto max_disparity = command_line.intValue("max-disp");
+  const auto window = command_line.intValue("window");
+  const bool subpixel = command_line.flag("subpixel");
+  const auto backend = command_line.value("backend");
+  const auto ground_truth_path = command_line.value("gt");
+  const auto ground_truth_scale = command_line.doubleValue("gt-scale");
+  const auto colour_path = command_line.value("colour");
+  command_line.rejectUnknown();
+
+  if (cameras.empty()) throw UsageError("--cam is required (at least one secondary view)");
+  if (!endsWith(out_path, ".pfm") && !endsWith(out_path, ".png")) {
+    throw UsageError("--out '" + out_path + "': must end in .pfm or .png");
+  }
+  if (colour_path && !endsWith(*colour_path, ".png")) {
+    throw UsageError("--colour '" + *colour_path + "': must end in .png");
+  }
+  if (ground_truth_path.has_value() != ground_truth_scale.has_value()) {
+    throw UsageError("--gt and --gt-scale go together");
+  }
+  if (ground_truth_scale && *ground_truth_scale <= 0) throw UsageError("--gt-scale must be positive");
+  if (window && (*window < 3 || *window % 2 == 0)) {
+    throw UsageError("--window " + std::to_string(*window) + ": must be odd and >= 3");
+  }
+  if (max_disparity && *max_disparity <= 0) {
+    throw UsageError("--max-disp " + std::to_string(*max_disparity) + ": must be positive");
+  }
+
+  StereoOptions options = loadOptions(config_path);
+  if (max_disparity) options.max_disparity = *max_disparity;
+  if (window) options.window = *window;
+  if (subpixel) options.subpixel = true;
+  if (backend) {
+    try {
+      options.backend = parseStereoBackend(*backend, "--backend");
+    } catch (const ConfigError& error) {
+      throw UsageError(error.what());
+    }
+  }
+
+  StereoFrame frame;
+  frame.reference = readGreyImage(reference_path);
+  for (const std::string& camera : cameras) {
+    frame.secondaries.push_back(parseCamera(camera));
+    const cv::Mat1b& image = frame.secondaries.back().image;
+    if (image.size() != frame.reference.size()) {
+      throw std::runtime_error(camera.substr(0, camera.rfind(':', camera.rfind(':') - 1)) + ": image is " +
+                               std::to_string(image.cols) + "x" + std::to_string(image.rows) + ", the reference " +
+                               reference_path + " is " + std::to_string(frame.reference.cols) + "x" +
+                               std::to_string(frame.reference.rows));
+    }
+  }
+  if (options.max_disparity >= frame.reference.cols) {
+    const std::string what = max_disparity ? "--max-disp" : config_path + ": [stereo] max_disparity";
+    throw UsageError(what + " " + std::to_string(options.max_disparity) + ": must be smaller than the image width " +
+                     std::to_string(frame.reference.cols));
+  }
+  validateStereoOptions(options);
+
+  const cv::Mat1f disparity = computeDisparity(frame, options);
+  writeDisparityImage(out_path, disparity);
+  if (colour_path) writeDisparityColourPng(*colour_path, disparity, options.max_disparity);
+  std::cout << "disparity: " << out_path << " (" << disparity.cols << "x" << disparity.rows << ", "
+            << frame.secondaries.size() << " secondary view" << (frame.secondaries.size() > 1 ? "s" : "")
+            << ", backend " << toString(options.backend) << ")\n";
+  if (ground_truth_path) {
+    const DisparityEvaluation result =
+        evaluateDisparity(disparity, loadMiddleburyGroundTruth(*ground_truth_path, *ground_truth_scale));
+    char line[200];
+    std::snprintf(line, sizeof(line),
+                  "evaluation: density %.2f%%  bad-1.0 %.2f%%  bad-2.0 %.2f%%  mean abs error %.3f px  (%d known pixels)\n",
+                  100.0 * result.density, 100.0 * result.bad_1, 100.0 * result.bad_2, result.mean_abs_error,
+                  result.known_pixels);
+    std::cout << line;
+  }
+  return 0;
+}
+
 }  // namespace stereonav::app
