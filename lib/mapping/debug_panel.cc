@@ -34,7 +34,7 @@ GridUpdateOptions singleReadingUpdate() {
 
 void putLabel(cv::Mat3b& panel, const std::string& text, cv::Point top_left) {
   cv::putText(panel, text, top_left + cv::Point(2, kLabelHeight - 6), cv::FONT_HERSHEY_SIMPLEX,
-              0.45, kLabelColour, 1, cv::LINE_AA);
+              0.42, kLabelColour, 1, cv::LINE_AA);
 }
 
 void paste(cv::Mat3b& panel, const cv::Mat3b& tile, cv::Point top_left) {
@@ -97,7 +97,7 @@ cv::Mat3b DebugPanelRenderer::columnStripTile(const DisparityScan& scan) const {
 cv::Mat3b DebugPanelRenderer::depthPlotTile(const DisparityScan& scan) const {
   const int width = scan.columns() * image_scale_;
   cv::Mat3b tile(kPlotHeight, width, cv::Vec3b(255, 255, 255));
-  const int top = 6, bottom = kPlotHeight - 4;
+  const int top = 14, bottom = kPlotHeight - 4;
   const auto rowForDepth = [&](double depth) {
     return static_cast<int>(std::lround(bottom - (bottom - top) * std::min(depth, range_m_) / range_m_));
   };
@@ -182,11 +182,13 @@ cv::Mat3b DebugPanelRenderer::render(const DisparityScanner& scanner, size_t fra
 
   putLabel(panel, "(a) reference image", a);
   paste(panel, reference, a + cv::Point(0, kLabelHeight));
-  putLabel(panel, "(b) disparity: white invalid, magenta rejected", b);
+  putLabel(panel, "(b) disparity; white invalid, magenta spikes", b);
   paste(panel, disparityTile(scanner), b + cv::Point(0, kLabelHeight));
   putLabel(panel, "(c) column max disparity (body volume)", c);
   paste(panel, columnStripTile(scan), c + cv::Point(0, kLabelHeight));
-  putLabel(panel, "(d) depth per column", d);
+  char depth_label[64];
+  std::snprintf(depth_label, sizeof depth_label, "(d) depth per column (red: beyond %.0f m)", range_m_);
+  putLabel(panel, depth_label, d);
   paste(panel, depthPlotTile(scan), d + cv::Point(0, kLabelHeight));
   putLabel(panel, "(e) this frame: OCC black, CLEAR white", e);
   paste(panel, topDownTile(scan, top_down_size), e + cv::Point(0, kLabelHeight));
