@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "disparity/disparity_evaluation.h"
+#include "shipped_config.h"
 #include "tsukuba.h"
 
 namespace stereonav {
@@ -14,13 +15,12 @@ using testing::tsukubaBinocular;
 using testing::tsukubaGroundTruth;
 using testing::tsukubaMultiBaseline;
 
-// The shipped defaults (StereoOptions, ini/*.ini) except for the disparity range: tsukuba's
-// disparities are 5..14, so 16 candidates, and the uniqueness threshold, which scales with
-// 1/candidates (0.02 for the default 32, so 0.04 for 16).
+// The shipped [stereo] section of ini/trinocular_160x120.ini: the defaults except for 16
+// candidates (tsukuba's disparities are 5..14) and the uniqueness threshold that goes with them.
 StereoOptions tsukubaOptions() {
-  StereoOptions options;
-  options.max_disparity = 15;
-  options.uniqueness_threshold = 0.04;
+  const StereoOptions options = testing::shippedStereoOptions("trinocular_160x120.ini");
+  EXPECT_EQ(options.max_disparity, 15);
+  EXPECT_DOUBLE_EQ(options.uniqueness_threshold, 0.04);
   return options;
 }
 

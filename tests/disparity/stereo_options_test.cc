@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 #include <mrpt/config/CConfigFileMemory.h>
 
+#include "shipped_config.h"
+
 namespace stereonav {
 namespace {
 
@@ -75,6 +77,21 @@ TEST(StereoOptionsTest, BadValuesNameTheKey) {
   EXPECT_NE(errorOf("threads = 0\n").find("[stereo] threads"), std::string::npos);
   EXPECT_NE(errorOf("texture_threshold = -1\n").find("[stereo] texture_threshold"), std::string::npos);
   EXPECT_NE(errorOf("prefilter_cap = 200\n").find("[stereo] prefilter_cap"), std::string::npos);
+}
+
+TEST(StereoOptionsTest, ShippedConfigurationsLoad) {
+  // The 320x240 example is the library's defaults; the 160x120 one halves the disparity range
+  // and doubles the uniqueness threshold with it.
+  const StereoOptions full = testing::shippedStereoOptions("trinocular_320x240.ini");
+  const StereoOptions defaults;
+  EXPECT_EQ(full.max_disparity, defaults.max_disparity);
+  EXPECT_DOUBLE_EQ(full.uniqueness_threshold, defaults.uniqueness_threshold);
+  EXPECT_DOUBLE_EQ(full.texture_threshold, defaults.texture_threshold);
+  EXPECT_EQ(full.left_right_check, defaults.left_right_check);
+  EXPECT_EQ(full.prefilter, defaults.prefilter);
+  const StereoOptions half = testing::shippedStereoOptions("trinocular_160x120.ini");
+  EXPECT_EQ(half.disparityCount(), full.disparityCount() / 2);
+  EXPECT_DOUBLE_EQ(half.uniqueness_threshold, 2 * full.uniqueness_threshold);
 }
 
 }  // namespace
