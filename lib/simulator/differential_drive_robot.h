@@ -52,12 +52,11 @@ class DifferentialDriveRobot {
   // count again.
   int collisionCount() const { return collisions_; }
   bool inContact() const { return in_contact_; }
-  const DifferentialDriveOptions& options() const { return options_; }
 
+ private:
   // Whether the footprint at (x, y) overlaps a solid of the world in the body's height band.
   bool footprintCollides(double x, double y, double time_s) const;
 
- private:
   const World& world_;
   DifferentialDriveOptions options_;
   std::vector<Solid> static_in_band_;

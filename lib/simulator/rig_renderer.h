@@ -49,8 +49,6 @@ class RigRenderer {
   mrpt::poses::CPose3D referencePose(const mrpt::poses::CPose2D& robot_pose) const;
   mrpt::poses::CPose3D secondaryPose(const mrpt::poses::CPose2D& robot_pose, size_t i) const;
 
-  const CameraRig& rig() const { return rig_; }
-
  private:
   // Noise-free brightness in grey levels; also the depth Z of each pixel if `depth` is given.
   // Texture detail is filtered for the footprint of a pixel seen from `footprint_viewpoint`

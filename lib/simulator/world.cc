@@ -78,10 +78,4 @@ double World::lightingGain(double time_s) const {
   return 1.0 + lighting_change * std::sin(2.0 * M_PI * time_s / lighting_period_s);
 }
 
-std::vector<Solid> World::solidsAt(double time_s) const {
-  std::vector<Solid> all = solids;
-  for (const auto& obstacle : moving_obstacles) all.push_back(obstacle.at(time_s));
-  return all;
-}
-
 }  // namespace stereonav

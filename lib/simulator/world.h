@@ -76,8 +76,6 @@ struct World {
   double start_pose[3] = {0.0, 0.0, 0.0};
 
   double lightingGain(double time_s) const;
-  // The static solids followed by the moving ones at `time_s`.
-  std::vector<Solid> solidsAt(double time_s) const;
 };
 
 }  // namespace stereonav

@@ -76,6 +76,9 @@ TEST(GroundTruthMap, WrittenMapLoadsInMrptWithTheSameCells) {
   const World world = worldFromText("[world]\nbounds = 0 0 2 2\n[box.b]\ncenter = 1 1\nsize = 0.4 0.2\n");
   const GroundTruthMap map(world, tenCentimetres(0.5));
   EXPECT_EQ(map.width(), 30);
+  EXPECT_DOUBLE_EQ(map.xMin(), -0.5);
+  EXPECT_DOUBLE_EQ(map.yMin(), -0.5);
+  EXPECT_DOUBLE_EQ(map.resolution(), 0.1);
   EXPECT_EQ(map.cell(0, 0), GroundTruthMap::kUnknown);
   const std::filesystem::path directory =
       std::filesystem::path(STEREONAV_BINARY_DIR) / "simulator_test_output";

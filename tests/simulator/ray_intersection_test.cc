@@ -127,9 +127,13 @@ TEST(RayCaster, GridTraversalFindsTheSameHitsAsTestingEverySolid) {
     if (world.ceiling_height > 0.0) {
       nearest = std::min(nearest, intersectHorizontalPlane(world.ceiling_height, ray, kNoHit));
     }
-    for (const auto& solid : world.solidsAt(0.0)) {
+    for (const auto& solid : world.solids) {
       int face = 0;
       nearest = std::min(nearest, intersectSolid(solid, ray, kNoHit, &face));
+    }
+    for (const auto& obstacle : world.moving_obstacles) {
+      int face = 0;
+      nearest = std::min(nearest, intersectSolid(obstacle.at(0.0), ray, kNoHit, &face));
     }
     ASSERT_EQ(caster.cast(ray).t, nearest) << "ray " << i;
   }
