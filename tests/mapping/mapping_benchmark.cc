@@ -1,0 +1,95 @@
+// The whole per-frame pipeline of StereoMapper (grey conversion, stereo, spike removal, column
+// projection, grid update) on the sample run's 320x240 L-shaped trinocular frames, 32
+// disparities, one thread; frames are decoded from rawlogs/sample_trinocular.rawlog before
+// timing starts. Target: >= 200 frames/s for the paper's grid. Side by side in the same run:
+//   - Paper:      ini/sample_trinocular.ini with whole-pixel disparities (paper section 3.2)
+//   - PaperWithoutLeftRightCheck: texture and uniqueness validation only (section 2.2)
+//   - Subpixel:   the ini as shipped (sub-pixel disparities)
+//   - MrptBayes:  the same pipeline into MRPT's COccupancyGridMap2D through the virtual scan
+// Counters: frames/s, and ms per frame of each stage (from StereoMapper's own stage timers).
+//   bench_mapping --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+#include <benchmark/benchmark.h>
+#include <opencv2/core/utility.hpp>
+
+#include <string>
+#include <vector>
+
+#include "mapping/rawlog_mapping.h"
+#include "mapping/stereo_mapper.h"
+#include "observations/rawlog_reader.h"
+
+namespace stereonav {
+namespace {
+
+const std::string kSourceDir = std::string(STEREONAV_TEST_DATA_DIR) + "/../..";
+
+MappingOptions sampleOptions() {
+  MappingOptions options = loadMappingOptionsFile(kSourceDir + "/ini/sample_trinocular.ini");
+  options.stereo.max_disparity = 31;  // 32 disparities
+  options.stereo.threads = 1;
+  return options;
+}
+
+const std::vector<RigFrame>& sampleFrames() {
+  static const std::vector<RigFrame> frames = [] {
+    RawlogReader reader(kSourceDir + "/rawlogs/sample_trinocular.rawlog",
+                        rawlogReaderOptions(sampleOptions()));
+    std::vector<RigFrame> decoded;
+    while (auto frame = reader.next()) decoded.push_back(std::move(*frame));
+    if (decoded.empty()) throw std::runtime_error("no frames in the sample rawlog");
+    return decoded;
+  }();
+  return frames;
+}
+
+void runPipeline(benchmark::State& state, const MappingOptions& options) {
+  cv::setNumThreads(1);
+  const std::vector<RigFrame>& frames = sampleFrames();
+  StereoMapper mapper(options, frames.front().rig);
+  size_t i = 0;
+  for (auto _ : state) {
+    const RigFrame& frame = frames[i++ % frames.size()];
+    mapper.process(frame, *frame.odometry);
+  }
+  const StageTimes& times = mapper.times();
+  state.SetItemsProcessed(static_cast<int64_t>(times.frames()));
+  for (size_t stage = 0; stage < kPipelineStageCount; ++stage) {
+    const auto which = static_cast<PipelineStage>(stage);
+    state.counters[std::string(stageName(which)) + "_ms"] = times.meanMs(which);
+  }
+  state.counters["frames_per_s"] = 1000.0 / times.meanFrameMs();
+}
+
+void BM_PipelinePaper(benchmark::State& state) {
+  MappingOptions options = sampleOptions();
+  options.stereo.subpixel = false;
+  runPipeline(state, options);
+}
+
+// Texture and uniqueness validation only, as the Triclops did (paper section 2.2): the
+// left-right check matches every frame a second time.
+void BM_PipelinePaperWithoutLeftRightCheck(benchmark::State& state) {
+  MappingOptions options = sampleOptions();
+  options.stereo.subpixel = false;
+  options.stereo.left_right_check = false;
+  runPipeline(state, options);
+}
+
+void BM_PipelineSubpixel(benchmark::State& state) { runPipeline(state, sampleOptions()); }
+
+void BM_PipelineMrptBayes(benchmark::State& state) {
+  MappingOptions options = sampleOptions();
+  options.stereo.subpixel = false;
+  options.grid.model = GridModel::kMrptBayes;
+  runPipeline(state, options);
+}
+
+BENCHMARK(BM_PipelinePaper)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_PipelinePaperWithoutLeftRightCheck)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_PipelineSubpixel)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_PipelineMrptBayes)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace stereonav
+
+BENCHMARK_MAIN();
