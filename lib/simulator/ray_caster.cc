@@ -14,8 +14,10 @@ bool floorProjectionPasses(const Solid& solid, const Ray& ray) {
   const double dx = ray.direction.x();
   const double dy = ray.direction.y();
   const double cross = px * dy - py * dx;
-  const double radius = solid.boundingRadius();
-  return cross * cross <= radius * radius * (dx * dx + dy * dy);
+  const double radius_squared = solid.shape == Solid::Shape::kBox
+                                    ? solid.half_x * solid.half_x + solid.half_y * solid.half_y
+                                    : solid.radius * solid.radius;
+  return cross * cross <= radius_squared * (dx * dx + dy * dy);
 }
 
 // Rounding at cell borders must never drop a solid from a cell its surface reaches.

@@ -5,9 +5,6 @@
 namespace stereonav {
 namespace {
 
-// Below this a hit is taken to be at the ray's own origin (a surface the ray starts on).
-constexpr double kMinimumT = 1e-9;
-
 // Slab test on one axis: narrows [t_near, t_far]; returns false if the ray misses the slab.
 bool clipSlab(double origin, double direction, double low, double high, int entry_face,
               double* t_near, double* t_far, int* near_face) {
@@ -46,7 +43,7 @@ double intersectBox(const Solid& box, const Ray& ray, double t_max, int* face) {
                 &near_face)) {
     return kNoHit;
   }
-  if (t_near <= kMinimumT || near_face < 0) return kNoHit;
+  if (t_near <= kMinimumHitT || near_face < 0) return kNoHit;
   *face = near_face;
   return t_near;
 }
@@ -67,7 +64,7 @@ double intersectCylinder(const Solid& cylinder, const Ray& ray, double t_max, in
     if (discriminant >= 0.0) {
       const double t = (-b - std::sqrt(discriminant)) / a;
       const double z = ray.origin.z() + t * dz;
-      if (t > kMinimumT && t < t_max && z >= cylinder.z_min && z <= cylinder.z_max) {
+      if (t > kMinimumHitT && t < t_max && z >= cylinder.z_min && z <= cylinder.z_max) {
         best = t;
         *face = kFacePlusX;
       }
@@ -80,7 +77,7 @@ double intersectCylinder(const Solid& cylinder, const Ray& ray, double t_max, in
     const double t = (cap_z - ray.origin.z()) / dz;
     const double hx = px + t * dx;
     const double hy = py + t * dy;
-    if (t > kMinimumT && t < std::min(best, t_max) && hx * hx + hy * hy <= r2) {
+    if (t > kMinimumHitT && t < std::min(best, t_max) && hx * hx + hy * hy <= r2) {
       best = t;
       *face = dz < 0.0 ? kFaceTop : kFaceBottom;
     }
@@ -93,12 +90,6 @@ double intersectCylinder(const Solid& cylinder, const Ray& ray, double t_max, in
 double intersectSolid(const Solid& solid, const Ray& ray, double t_max, int* face) {
   return solid.shape == Solid::Shape::kBox ? intersectBox(solid, ray, t_max, face)
                                            : intersectCylinder(solid, ray, t_max, face);
-}
-
-double intersectHorizontalPlane(double z, const Ray& ray, double t_max) {
-  if (ray.direction.z() == 0.0) return kNoHit;
-  const double t = (z - ray.origin.z()) / ray.direction.z();
-  return t > kMinimumT && t < t_max ? t : kNoHit;
 }
 
 SurfacePoint surfaceOfSolid(const Solid& solid, int face, const Ray& ray, double t) {

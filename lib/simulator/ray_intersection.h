@@ -16,6 +16,8 @@ struct Ray {
 };
 
 constexpr double kNoHit = std::numeric_limits<double>::infinity();
+// Below this a hit is taken to be at the ray's own origin (a surface the ray starts on).
+constexpr double kMinimumHitT = 1e-9;
 
 // Which face of a solid a ray hit. Boxes: 0..5 = +x, -x, +y, -y (the box's own axes), top,
 // bottom. Cylinders: 0 = side, 4 = top, 5 = bottom.
@@ -25,8 +27,13 @@ enum SolidFace : int { kFacePlusX = 0, kFaceMinusX, kFacePlusY, kFaceMinusY, kFa
 // the origin is inside the solid: a camera never looks out of an obstacle). Sets *face on a hit.
 double intersectSolid(const Solid& solid, const Ray& ray, double t_max, int* face);
 
-// t where the ray crosses the horizontal plane at height z, in (0, t_max), or kNoHit.
-double intersectHorizontalPlane(double z, const Ray& ray, double t_max);
+// t where the ray crosses the horizontal plane at height z, in (0, t_max), or kNoHit. Inline:
+// every pixel's ray meets the floor and the ceiling.
+inline double intersectHorizontalPlane(double z, const Ray& ray, double t_max) {
+  if (ray.direction.z() == 0.0) return kNoHit;
+  const double t = (z - ray.origin.z()) / ray.direction.z();
+  return t > kMinimumHitT && t < t_max ? t : kNoHit;
+}
 
 // What the renderer needs to know about a hit point.
 struct SurfacePoint {

@@ -18,7 +18,6 @@ SimulationRecorder::SimulationRecorder(const std::string& rawlog_path, const Raw
                                        const CameraRig& rig)
     : writer_(rawlog_path, options), rig_(rig), ground_truth_path_(groundTruthPath(rawlog_path)) {
   ground_truth_ << std::setprecision(9);
-  ground_truth_ << "# true robot pose per frame: t[s] x[m] y[m] phi[rad]\n";
 }
 
 void SimulationRecorder::record(const SimulatedFrame& frame) {

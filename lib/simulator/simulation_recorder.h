@@ -11,8 +11,9 @@ namespace stereonav {
 
 // Records a simulated run the way the real robot's would be: a rawlog of rig frames with the
 // robot's (drifting) odometry, readable by the pipeline and by MRPT tools; plus the ground truth
-// the real robot never has, the true pose of every frame, in "<rawlog stem>.gt.txt" as
-// "t x y phi" lines (t: seconds since the start of the run, x y in metres, phi in radians).
+// the real robot never has, the true pose of every frame, in "<rawlog stem>.gt.txt": one line
+// "t x y phi" per frame and nothing else (t: seconds since the start of the run, x y in metres,
+// phi in radians).
 // Frame timestamps in the rawlog are 2000-01-01T00:00:00Z plus t, so runs are reproducible.
 class SimulationRecorder {
  public:

@@ -33,10 +33,6 @@ Solid Solid::cylinder(double x, double y, double radius, double z_min, double z_
   return solid;
 }
 
-double Solid::boundingRadius() const {
-  return shape == Shape::kBox ? std::sqrt(half_x * half_x + half_y * half_y) : radius;
-}
-
 FloorExtent Solid::floorExtent() const {
   double ex = radius;
   double ey = radius;

@@ -24,8 +24,6 @@ struct Solid {
                    double z_max, int texture);
   static Solid cylinder(double x, double y, double radius, double z_min, double z_max, int texture);
 
-  // Radius of the smallest upright cylinder about (x, y) containing the solid.
-  double boundingRadius() const;
   // The smallest axis-aligned rectangle containing the solid's footprint.
   FloorExtent floorExtent() const;
 
