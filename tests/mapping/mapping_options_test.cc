@@ -1,0 +1,78 @@
+#include "mapping/mapping_options.h"
+
+#include <gtest/gtest.h>
+#include <mrpt/config/CConfigFileMemory.h>
+
+#include <filesystem>
+#include <fstream>
+
+namespace stereonav {
+namespace {
+
+MappingOptions load(const std::string& text) {
+  return loadMappingOptions(mrpt::config::CConfigFileMemory(text));
+}
+
+std::string errorOf(const std::string& text) {
+  try {
+    load(text);
+  } catch (const ConfigError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+TEST(MappingOptionsTest, EachSectionGoesToItsStage) {
+  const MappingOptions options = load(
+      "[rig]\nwidth = 160\nheight = 120\nfocal_px = 80\ncx = 79.5\ncy = 59.5\n"
+      "[rawlog]\nsensor_label = HEAD\ntolerance_focal_px = 2\n"
+      "[stereo]\nmax_disparity = 15\n"
+      "[spike_removal]\nmin_region_pixels = 20\n"
+      "[projection]\nrobot_height_m = 1.5\n"
+      "[grid]\nmodel = mrpt_bayes\nresolution = 0.1\n"
+      "[mapping]\npanel_range_m = 3\nvirtual_scans = true\n");
+  ASSERT_TRUE(options.rig.has_value());
+  EXPECT_EQ(options.rig->reference.width, 160);
+  EXPECT_EQ(options.sensor_label, "HEAD");
+  EXPECT_EQ(options.calibration_tolerance.focal_px, 2.0);
+  EXPECT_EQ(options.stereo.max_disparity, 15);
+  EXPECT_EQ(options.spike_removal.segmentation.min_region_pixels, 20);
+  EXPECT_EQ(options.projection.robot_height_m, 1.5);
+  EXPECT_EQ(options.grid.model, GridModel::kMrptBayes);
+  EXPECT_EQ(options.grid.stereo.limits.resolution, 0.1);
+  EXPECT_EQ(options.mapper.panel_range_m, 3.0);
+  EXPECT_TRUE(options.mapper.virtual_scans);
+}
+
+TEST(MappingOptionsTest, AbsentSectionsKeepDefaultsAndNoRigMeansTheRawlogsRig) {
+  const MappingOptions options = load("");
+  EXPECT_FALSE(options.rig.has_value());
+  EXPECT_EQ(options.sensor_label, "");  // follow the first stereo pair
+  EXPECT_EQ(options.stereo.max_disparity, StereoOptions{}.max_disparity);
+  EXPECT_EQ(options.grid.model, GridModel::kLinear);
+}
+
+TEST(MappingOptionsTest, UnknownKeysAreRejectedInEverySection) {
+  for (const char* section : {"rig", "rawlog", "stereo", "spike_removal", "projection", "grid", "mapping"}) {
+    const std::string message = errorOf(std::string("[") + section + "]\nno_such_key = 1\n");
+    EXPECT_NE(message.find(std::string("[") + section + "]"), std::string::npos) << message;
+    EXPECT_NE(message.find("no_such_key"), std::string::npos) << message;
+  }
+  EXPECT_NE(errorOf("[mapping]\npanel_range_m = 0\n").find("panel_range_m"), std::string::npos);
+}
+
+TEST(MappingOptionsTest, FileErrorsNameTheFile) {
+  EXPECT_THROW(loadMappingOptionsFile("/nonexistent/map.ini"), std::runtime_error);
+  const std::string path = (std::filesystem::temp_directory_path() / "mapping_options_test.ini").string();
+  std::ofstream(path) << "[stereo]\nwindwo = 7\n";
+  try {
+    loadMappingOptionsFile(path);
+    ADD_FAILURE() << "no error";
+  } catch (const ConfigError& error) {
+    EXPECT_EQ(std::string(error.what()).rfind(path + ": [stereo] ", 0), 0u) << error.what();
+  }
+  std::filesystem::remove(path);
+}
+
+}  // namespace
+}  // namespace stereonav

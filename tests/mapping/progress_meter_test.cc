@@ -1,0 +1,49 @@
+#include "mapping/progress_meter.h"
+
+#include <gtest/gtest.h>
+
+#include <csignal>
+#include <sstream>
+
+#include "mapping/sigint_stop.h"
+
+namespace stereonav {
+namespace {
+
+TEST(ProgressMeterTest, FinalLineShowsCountPercentageAndEndsTheLine) {
+  std::ostringstream out;
+  ProgressMeter meter(out, 60);
+  meter.finish(30);
+  const std::string text = out.str();
+  EXPECT_EQ(text.front(), '\r');  // redrawn in place
+  EXPECT_NE(text.find("30/60"), std::string::npos) << text;
+  EXPECT_NE(text.find(" 50%"), std::string::npos) << text;
+  EXPECT_NE(text.find("[############............]"), std::string::npos) << text;
+  EXPECT_NE(text.find("ETA"), std::string::npos) << text;
+  EXPECT_EQ(text.back(), '\n');
+}
+
+TEST(ProgressMeterTest, WithoutATotalShowsCountAndRateOnly) {
+  std::ostringstream out;
+  ProgressMeter meter(out, std::nullopt);
+  meter.finish(12);
+  EXPECT_NE(out.str().find("12 frames"), std::string::npos) << out.str();
+  EXPECT_EQ(out.str().find("ETA"), std::string::npos) << out.str();
+}
+
+TEST(ProgressMeterTest, UpdatesAreThrottled) {
+  std::ostringstream out;
+  ProgressMeter meter(out, 1000);
+  for (size_t i = 0; i < 1000; ++i) meter.update(i);  // well within 100 ms
+  EXPECT_EQ(out.str(), "");
+}
+
+TEST(SigintStopRequestTest, FirstSigintOnlyRaisesTheFlag) {
+  SigintStopRequest stop;
+  EXPECT_FALSE(stop.requested());
+  std::raise(SIGINT);  // would end the test binary without the handler
+  EXPECT_TRUE(stop.requested());
+}
+
+}  // namespace
+}  // namespace stereonav
