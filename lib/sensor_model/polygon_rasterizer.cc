@@ -58,8 +58,7 @@ void appendCellSpans(const ConvexPolygon& polygon, CellSpanBuffer& spans) {
         std::min(polygon.vertices[right_to].v, polygon.vertices[left_to].v);
     const int stretch_end = std::min(row_end, std::max(row + 1, ceilToInt(stretch_top - 0.5)));
     CellSpan* out = spans.room(static_cast<size_t>(stretch_end - row));
-    for (; row < stretch_end; ++row) {
-      const double v = row + 0.5;
+    for (double v = row + 0.5; row < stretch_end; ++row, v += 1.0) {  // v stays exact
       const int col_begin = ceilToInt(std::max(u_min, left.uAt(v)) - 0.5);
       const int col_end = ceilToInt(std::min(u_max, right.uAt(v)) - 0.5);
       *out = {row, col_begin, col_end};
@@ -98,12 +97,13 @@ void appendPolygonSpans(std::vector<ScanEdge>& edges, CellSpanBuffer& spans) {
         continue;
       }
       const ScanEdge& edge = *active[i];
-      const Crossing crossing{std::clamp(edge.line.uAt(v), edge.u_low, edge.u_high), edge.winding};
-      auto at = crossings.end();  // insertion sort: a handful of crossings per row
-      while (at != crossings.begin() && (at - 1)->u > crossing.u) --at;
-      crossings.insert(at, crossing);
+      crossings.push_back({std::clamp(edge.line.uAt(v), edge.u_low, edge.u_high), edge.winding});
       ++i;
     }
+    // Usually two crossings; a frontier running along the row (a wall seen at a grazing angle)
+    // can bring a hundred.
+    std::sort(crossings.begin(), crossings.end(),
+              [](const Crossing& a, const Crossing& b) { return a.u < b.u; });
     int winding = 0;
     double entered = 0.0;
     for (const Crossing& crossing : crossings) {

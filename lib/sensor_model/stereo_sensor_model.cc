@@ -112,15 +112,18 @@ WorldBounds StereoSensorModel::bounds(const std::vector<ColumnReading>& readings
                                       const mrpt::poses::CPose2D& camera_floor_pose) const {
   WorldBounds bounds{camera_floor_pose.x(), camera_floor_pose.x(), camera_floor_pose.y(),
                      camera_floor_pose.y()};
+  const auto include = [&](const CellPoint& p) {
+    bounds.min_x = std::min(bounds.min_x, p.u);
+    bounds.max_x = std::max(bounds.max_x, p.u);
+    bounds.min_y = std::min(bounds.min_y, p.v);
+    bounds.max_y = std::max(bounds.max_y, p.v);
+  };
+  // Every region lies in the triangle camera - far corners (CLEAR-only readings have their far
+  // depth at their near depth), so the far corners bound them all.
   const FloorAxes axes = floorAxes(camera_floor_pose, kMetricFrame);
   for (const ColumnReading& reading : readings) {
-    const RegionCorners c = cornersOf(reading, camera, axes);
-    for (const auto& p : {c.near_left, c.near_right, c.far_left, c.far_right}) {
-      bounds.min_x = std::min(bounds.min_x, p.x);
-      bounds.max_x = std::max(bounds.max_x, p.x);
-      bounds.min_y = std::min(bounds.min_y, p.y);
-      bounds.max_y = std::max(bounds.max_y, p.y);
-    }
+    include(pointAtDepth(axes, lineOfSight(axes, camera, reading.column - 0.5), reading.far_depth_m));
+    include(pointAtDepth(axes, lineOfSight(axes, camera, reading.column + 0.5), reading.far_depth_m));
   }
   return bounds;
 }

@@ -100,6 +100,7 @@ void BM_StereoOccupancyGridInsertDisparityScan(benchmark::State& state) {
   const Scene scene = makeScene();
   StereoGridMapOptions options;
   options.limits.resolution = kResolution;
+  options.update.accuracy_preservation = state.range(0) != 0;
   CStereoOccupancyGridMap map(options);
   const mrpt::poses::CPose3D robot;
   for (auto _ : state) {
@@ -108,7 +109,11 @@ void BM_StereoOccupancyGridInsertDisparityScan(benchmark::State& state) {
   }
   state.counters["cells"] = map.grid().width() * map.grid().height();
 }
-BENCHMARK(BM_StereoOccupancyGridInsertDisparityScan)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_StereoOccupancyGridInsertDisparityScan)
+    ->ArgName("accuracy_preservation")
+    ->Arg(1)
+    ->Arg(0)
+    ->Unit(benchmark::kMicrosecond);
 
 void BM_MrptOccupancyGridInsertRangeScan(benchmark::State& state) {
   const Scene scene = makeScene();
