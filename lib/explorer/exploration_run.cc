@@ -1,0 +1,263 @@
+#include "explorer/exploration_run.h"
+
+#include <mrpt/config/CConfigFile.h>
+#include <mrpt/core/Clock.h>
+#include <mrpt/math/wrap2pi.h>
+
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <random>
+#include <sstream>
+
+#include "common/atomic_file.h"
+#include "explorer/frontier_explorer.h"
+#include "explorer/simulated_robot_interface.h"
+#include "mapping/map_outputs.h"
+#include "mapping/stereo_mapper.h"
+#include "observations/rig_frame.h"
+#include "simulator/simulation_recorder.h"
+
+namespace stereonav {
+namespace {
+
+constexpr double kRunEpoch = 946684800.0;  // as SimulationRecorder stamps frames
+constexpr double kTimeSlack = 1e-9;
+constexpr double kStartJitterM = 0.5;
+
+template <typename Load>
+auto loadSection(const mrpt::config::CConfigFile& config, const std::string& file, const char* name, Load load) {
+  try {
+    IniSection section(config, name);
+    auto options = load(section);
+    section.rejectUnknownKeys();
+    return options;
+  } catch (const ConfigError& error) {
+    throw ConfigError(file + ": " + error.what());
+  }
+}
+
+// A start pose near the world's for this seed: a body's disc (plus 0.1 m) of true free floor.
+mrpt::poses::CPose2D seededStart(const World& world, const GroundTruthMap& truth, double radius, int seed) {
+  std::mt19937 random(static_cast<std::mt19937::result_type>(seed));
+  std::uniform_real_distribution<double> offset(-kStartJitterM, kStartJitterM), heading(-M_PI, M_PI);
+  const auto free_disc = [&](double x, double y) {
+    const double reach = radius + 0.1;
+    for (double dy = -reach; dy <= reach; dy += truth.resolution() * 0.5) {
+      for (double dx = -reach; dx <= reach; dx += truth.resolution() * 0.5) {
+        if (dx * dx + dy * dy > reach * reach) continue;
+        const int ix = static_cast<int>(std::floor((x + dx - truth.xMin()) / truth.resolution()));
+        const int iy = static_cast<int>(std::floor((y + dy - truth.yMin()) / truth.resolution()));
+        if (ix < 0 || iy < 0 || ix >= truth.width() || iy >= truth.height()) return false;
+        if (truth.cell(ix, iy) != GroundTruthMap::kFree) return false;
+      }
+    }
+    return true;
+  };
+  for (int attempt = 0; attempt < 1000; ++attempt) {
+    const double x = world.start_pose[0] + offset(random), y = world.start_pose[1] + offset(random);
+    const double phi = heading(random);
+    if (free_disc(x, y)) return mrpt::poses::CPose2D(x, y, phi);
+  }
+  return mrpt::poses::CPose2D(world.start_pose[0], world.start_pose[1], heading(random));
+}
+
+std::string jsonString(const std::string& text) {
+  std::string out = "\"";
+  for (const char c : text) {
+    if (c == '"' || c == '\\') out += '\\';
+    if (static_cast<unsigned char>(c) < 0x20) continue;
+    out += c;
+  }
+  return out + "\"";
+}
+
+// The map (white free, black occupied, grey unknown, top row = max y) with the odometry path.
+void savePathImage(const DisparityTaggedGrid& grid, const std::vector<mrpt::poses::CPose2D>& path,
+                   const std::string& file) {
+  cv::Mat1b grey(grid.height(), grid.width());
+  for (int row = 0; row < grid.height(); ++row) {
+    for (int col = 0; col < grid.width(); ++col) {
+      grey(grid.height() - 1 - row, col) = static_cast<uint8_t>(255 - grid.occupancy(col, row));
+    }
+  }
+  constexpr int kScale = 4;  // pixels per cell, so the path line is thinner than a cell
+  cv::Mat3b image;
+  cv::cvtColor(grey, image, cv::COLOR_GRAY2BGR);
+  cv::resize(image, image, cv::Size(), kScale, kScale, cv::INTER_NEAREST);
+  const auto pixel = [&](const mrpt::poses::CPose2D& pose) {
+    return cv::Point(static_cast<int>((pose.x() - grid.minX()) / grid.resolution() * kScale),
+                     static_cast<int>((grid.maxY() - pose.y()) / grid.resolution() * kScale));
+  };
+  for (size_t i = 1; i < path.size(); ++i) {
+    cv::line(image, pixel(path[i - 1]), pixel(path[i]), cv::Scalar(0, 0, 255), 1, cv::LINE_AA);
+  }
+  if (!path.empty()) {
+    cv::circle(image, pixel(path.front()), 2 * kScale, cv::Scalar(0, 160, 0), -1);
+    cv::circle(image, pixel(path.back()), 2 * kScale, cv::Scalar(255, 0, 0), -1);
+  }
+  writeFileAtomically(file, [&](const std::string& temp) {
+    if (!cv::imwrite(temp, image)) throw std::runtime_error(file + ": cannot write the image");
+  });
+}
+
+}  // namespace
+
+ExplorationConfig loadExplorationConfig(const std::string& path) {
+  if (!std::ifstream(path)) throw ConfigError(path + ": cannot open the configuration file");
+  const mrpt::config::CConfigFile file(path);
+  ExplorationConfig config;
+  config.rig = loadSection(file, path, "rig", loadCameraRig);
+  config.sensor = loadSection(file, path, "sim_sensor", loadSensorOptions);
+  config.robot = loadSection(file, path, "sim_robot", loadDifferentialDriveOptions);
+  config.simulation = loadSection(file, path, "simulation", loadSimulationOptions);
+  config.rawlog = loadSection(file, path, "rawlog", loadRawlogWriterOptions);
+  config.ground_truth = loadSection(file, path, "ground_truth_map", loadGroundTruthMapOptions);
+  config.explorer = loadSection(file, path, "explorer", loadExplorerOptions);
+  try {
+    config.mapping = loadMappingOptions(file);
+  } catch (const ConfigError& error) {
+    throw ConfigError(path + ": " + error.what());
+  }
+  if (config.explorer.robot_radius_m < config.robot.radius_m) {
+    throw ConfigError(path + ": [explorer] robot_radius_m: smaller than the robot's ([sim_robot] radius_m)");
+  }
+  config.ground_truth.band_max_z = config.robot.height_m;
+  return config;
+}
+
+std::string ExplorationReport::summary() const {
+  std::ostringstream text;
+  text << std::fixed << std::setprecision(1) << "explored " << coverage.free_area_m2 << " m2 free ("
+       << 100.0 * coverage.coverage << "% of the reachable free space), drove " << distance_m << " m in "
+       << sim_time_s << " s simulated (" << wall_time_s << " s wall), " << collisions
+       << " collision(s); stopped: " << stop_reason;
+  return text.str();
+}
+
+std::string ExplorationReport::toJson() const {
+  std::ostringstream json;
+  json << std::setprecision(6) << "{\n"
+       << "  \"explored_area_m2\": " << coverage.known_area_m2 << ",\n"
+       << "  \"free_area_m2\": " << coverage.free_area_m2 << ",\n"
+       << "  \"reachable_free_m2\": " << coverage.reachable_free_m2 << ",\n"
+       << "  \"covered_reachable_free_m2\": " << coverage.covered_m2 << ",\n"
+       << "  \"coverage\": " << coverage.coverage << ",\n"
+       << "  \"distance_m\": " << distance_m << ",\n"
+       << "  \"sim_time_s\": " << sim_time_s << ",\n"
+       << "  \"wall_time_s\": " << wall_time_s << ",\n"
+       << "  \"collisions\": " << collisions << ",\n"
+       << "  \"top_speed_mps\": " << top_speed_mps << ",\n"
+       << "  \"frames\": " << frames << ",\n"
+       << "  \"frame_rate_hz\": " << frame_rate_hz << ",\n"
+       << "  \"pipeline_ms_per_frame\": " << pipeline_ms_per_frame << ",\n"
+       << "  \"start_pose\": [" << start_x << ", " << start_y << ", " << start_phi << "],\n"
+       << "  \"stop_reason\": " << jsonString(stop_reason) << "\n"
+       << "}\n";
+  return json.str();
+}
+
+ExplorationReport runExploration(const World& world, const ExplorationConfig& config, const ExplorationJob& job) {
+  const auto wall_start = std::chrono::steady_clock::now();
+  SensorOptions sensor = config.sensor;
+  DifferentialDriveOptions robot_options = config.robot;
+  const GroundTruthMap truth(world, config.ground_truth);
+  mrpt::poses::CPose2D start(world.start_pose[0], world.start_pose[1], world.start_pose[2]);
+  if (job.seed) {
+    sensor.seed = *job.seed;
+    robot_options.seed = *job.seed;
+    start = seededStart(world, truth, robot_options.radius_m, *job.seed);
+  }
+  const double max_time = job.max_time_s.value_or(config.simulation.max_duration_s);
+
+  DifferentialDriveRobot robot(world, robot_options, start);
+  RigRenderer renderer(world, config.rig, sensor);
+  StereoMapper mapper(config.mapping, config.rig);
+  FrontierExplorer explorer(config.explorer);
+  double time = 0.0;
+  CSimulatedRobotInterface robot_interface(robot, time);
+  std::optional<SimulationRecorder> recorder;
+  if (!job.record_rawlog.empty()) recorder.emplace(job.record_rawlog, config.rawlog, config.rig);
+  const OccupancyScale& scale = config.mapping.grid.stereo.update.scale;
+
+  ExplorationReport report;
+  report.start_x = start.x();
+  report.start_y = start.y();
+  report.start_phi = start.phi();
+  report.frame_rate_hz = config.simulation.frame_rate_hz;
+  std::vector<mrpt::poses::CPose2D> odometry_path;
+  std::ostringstream path_text, truth_text, navlog;
+  path_text << std::setprecision(9);
+  truth_text << std::setprecision(9);
+  navlog << std::setprecision(6)
+         << "t,odometry_x,odometry_y,odometry_phi,true_x,true_y,true_phi,speed,turn_rate,phase,frontiers,"
+            "target_x,target_y,cost_to_go,speed_command,turn_rate_command,collisions\n";
+
+  const double dt = 1.0 / config.simulation.control_rate_hz;
+  size_t step = 0;
+  while (true) {
+    if (time >= static_cast<double>(report.frames) / config.simulation.frame_rate_hz - kTimeSlack) {
+      SimulatedFrame frame;
+      frame.time_s = time;
+      frame.images = renderer.render(robot.pose(), time);
+      frame.true_pose = robot.pose();
+      frame.odometry = robot.odometry();
+      frame.collisions = robot.collisionCount();
+      if (recorder) recorder->record(frame);
+      RigFrame rig_frame;
+      rig_frame.timestamp = mrpt::Clock::fromDouble(kRunEpoch + time);
+      rig_frame.reference = frame.images.reference;
+      rig_frame.secondaries.assign(frame.images.secondaries.begin(), frame.images.secondaries.end());
+      rig_frame.rig = config.rig;
+      rig_frame.odometry = frame.odometry;
+      mapper.process(rig_frame, frame.odometry);
+      explorer.updateMap(gridOfMap(mapper.map(), scale), frame.odometry);
+      ++report.frames;
+      odometry_path.push_back(frame.odometry);
+      path_text << time << " " << frame.odometry.x() << " " << frame.odometry.y() << " " << frame.odometry.phi() << "\n";
+      truth_text << time << " " << frame.true_pose.x() << " " << frame.true_pose.y() << " " << frame.true_pose.phi()
+                 << "\n";
+      const ExplorerStatus& status = explorer.status();
+      navlog << time << "," << frame.odometry.x() << "," << frame.odometry.y() << "," << frame.odometry.phi() << ","
+             << frame.true_pose.x() << "," << frame.true_pose.y() << "," << frame.true_pose.phi() << ","
+             << robot.speed() << "," << robot.turnRate() << "," << phaseName(status.phase) << ","
+             << status.frontiers << "," << (status.has_target ? status.target_x : NAN) << ","
+             << (status.has_target ? status.target_y : NAN) << "," << status.cost_to_go << ","
+             << status.speed_command << "," << status.turn_rate_command << "," << robot.collisionCount() << "\n";
+    }
+    if (time >= max_time - kTimeSlack) {
+      report.stop_reason = "time limit of " + std::to_string(static_cast<int>(max_time)) + " s reached";
+      break;
+    }
+    if (!explorer.controlStep(robot_interface)) {
+      report.stop_reason = explorer.stopReason();
+      break;
+    }
+    const mrpt::poses::CPose2D before = robot.pose();
+    robot.step(robot_interface.commandedSpeed(), robot_interface.commandedTurnRate(), dt, time);
+    report.distance_m += std::hypot(robot.pose().x() - before.x(), robot.pose().y() - before.y());
+    report.top_speed_mps = std::max(report.top_speed_mps, std::abs(robot.speed()));
+    time = static_cast<double>(++step) * dt;
+  }
+  if (recorder) recorder->finish();
+
+  report.sim_time_s = time;
+  report.collisions = robot.collisionCount();
+  report.pipeline_ms_per_frame = mapper.times().meanFrameMs();
+  const DisparityTaggedGrid grid = gridOfMap(mapper.map(), scale);
+  report.coverage = measureCoverage(truth, grid, robot_options.radius_m, start.x(), start.y());
+  saveMapOutputs(mapper.map(), scale, odometry_path, job.output_prefix);
+  writeStringAtomically(job.output_prefix + ".path.txt", path_text.str());
+  writeStringAtomically(job.output_prefix + ".truth.txt", truth_text.str());
+  writeStringAtomically(job.output_prefix + ".navlog.csv", navlog.str());
+  savePathImage(grid, odometry_path, job.output_prefix + ".path.png");
+  report.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  writeStringAtomically(job.output_prefix + ".stats.json", report.toJson());
+  return report;
+}
+
+}  // namespace stereonav

@@ -1,0 +1,73 @@
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "explorer/exploration_coverage.h"
+#include "explorer/explorer_options.h"
+#include "mapping/mapping_options.h"
+#include "observations/rawlog_writer.h"
+#include "rig/camera_rig.h"
+#include "simulator/differential_drive_robot.h"
+#include "simulator/ground_truth_map.h"
+#include "simulator/rig_renderer.h"
+#include "simulator/simulation.h"
+#include "simulator/world.h"
+
+namespace stereonav {
+
+// Everything a closed-loop exploration run is configured with, from one ini file: the
+// simulator's sections ([rig] [sim_sensor] [sim_robot] [simulation] [rawlog] [ground_truth_map],
+// as `stereonav simulate` reads them), the mapping pipeline's (as `stereonav map` reads them,
+// so a recorded run replays to the same map) and [explorer]. Unknown keys are rejected.
+struct ExplorationConfig {
+  CameraRig rig;
+  SensorOptions sensor;
+  DifferentialDriveOptions robot;
+  SimulationOptions simulation;  // frame_rate_hz, control_rate_hz, max_duration_s are used
+  RawlogWriterOptions rawlog;
+  GroundTruthMapOptions ground_truth;
+  MappingOptions mapping;
+  ExplorerOptions explorer;
+};
+
+// Throws ConfigError naming the file, section and key.
+ExplorationConfig loadExplorationConfig(const std::string& path);
+
+struct ExplorationJob {
+  // Writes the map outputs of `stereonav map` (<prefix>.gridmap .png .yaml .pgm .3Dscene), and
+  // <prefix>.path.txt   odometry pose per frame "t x y phi" (the map's frame)
+  // <prefix>.truth.txt  true pose per frame "t x y phi"
+  // <prefix>.navlog.csv the navigation trace, one line per frame
+  // <prefix>.path.png   the map with the path drawn (red; start green, end blue)
+  // <prefix>.stats.json ExplorationReport::toJson()
+  std::string output_prefix;
+  std::string record_rawlog;  // "" = do not record; else the rig frames with odometry (+ .gt.txt)
+  std::optional<double> max_time_s;  // default: [simulation] max_duration_s
+  // Seeds the camera noise and odometry errors, and moves the start up to 0.5 m from the world's
+  // start pose with any heading (on free floor); without it, the ini's seeds and start pose.
+  std::optional<int> seed;
+};
+
+struct ExplorationReport {
+  ExplorationCoverage coverage;
+  double start_x = 0.0;
+  double start_y = 0.0;
+  double start_phi = 0.0;
+  double distance_m = 0.0;
+  double sim_time_s = 0.0;
+  double wall_time_s = 0.0;
+  double top_speed_mps = 0.0;
+  double frame_rate_hz = 0.0;
+  double pipeline_ms_per_frame = 0.0;  // the mapping pipeline alone
+  size_t frames = 0;
+  int collisions = 0;
+  std::string stop_reason;
+
+  std::string summary() const;
+  std::string toJson() const;
+};
+
+ExplorationReport runExploration(const World& world, const ExplorationConfig& config, const ExplorationJob& job);
+
+}  // namespace stereonav

@@ -1,0 +1,344 @@
+#include "explorer/frontier_explorer.h"
+
+#include <mrpt/kinematics/CVehicleVelCmd_DiffDriven.h>
+#include <mrpt/math/wrap2pi.h>
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <limits>
+
+namespace stereonav {
+namespace {
+
+// Facing counts as done within this heading error; turning on the spot never goes slower than
+// kMinTurnRate, so it ends.
+constexpr double kFacedRad = 0.12;
+constexpr double kMinTurnRate = 0.25;
+// After facing a frontier the robot holds still this long (two frames at 5 Hz) so that the map
+// sees what is behind it before the frontier is judged.
+constexpr double kLookHoldS = 0.5;
+// Progress: the cost-to-go must drop by this much within stuck_timeout_s.
+constexpr double kProgressM = 0.3;
+// A robot that has moved this far from its last look-around may look around again.
+constexpr double kLookAroundSpacingM = 1.0;
+// Robot positions closer than this to the previous one add nothing to the footprint.
+constexpr double kVisitSpacingM = 0.1;
+// How far the robot searches for a traversable cell when the map has closed in on it.
+constexpr double kEscapeSearchM = 1.5;
+constexpr double kEscapeSpeed = 0.2;
+
+double clampAbs(double value, double limit) { return std::max(-limit, std::min(limit, value)); }
+
+}  // namespace
+
+const char* phaseName(ExplorerPhase phase) {
+  switch (phase) {
+    case ExplorerPhase::kLookingAround: return "looking_around";
+    case ExplorerPhase::kTurning: return "turning";
+    case ExplorerPhase::kDriving: return "driving";
+    case ExplorerPhase::kLookingAtFrontier: return "looking_at_frontier";
+    case ExplorerPhase::kEscaping: return "escaping";
+    case ExplorerPhase::kFinished: return "finished";
+  }
+  return "?";
+}
+
+FrontierExplorer::FrontierExplorer(const ExplorerOptions& options) : options_(options) {
+  planner_options_.body_radius_m = options.robot_radius_m + options.safety_margin_m;
+  planner_options_.repulsion_distance_m = options.repulsion_distance_m;
+  planner_options_.repulsion_weight = options.repulsion_weight;
+  status_.phase = options.initial_look_around ? ExplorerPhase::kLookingAround : ExplorerPhase::kTurning;
+  turned_rad_ = 0.0;
+}
+
+void FrontierExplorer::updateMap(const DisparityTaggedGrid& grid, const mrpt::poses::CPose2D& pose) {
+  if (visited_.empty() || std::hypot(pose.x() - visited_.back().x(), pose.y() - visited_.back().y()) >= kVisitSpacingM) {
+    visited_.push_back(pose);
+  }
+  grid_ = std::make_unique<NavigationGrid>(grid, visited_, options_.robot_radius_m);
+  replan();
+}
+
+void FrontierExplorer::replan() {
+  frontiers_ = findFrontiers(*grid_, options_.min_frontier_cells);
+  const double exhausted_sq = options_.exhausted_frontier_radius_m * options_.exhausted_frontier_radius_m;
+  for (Frontier& frontier : frontiers_) {
+    frontier.cells.erase(std::remove_if(frontier.cells.begin(), frontier.cells.end(),
+                                        [&](const cv::Point& cell) {
+                                          for (const cv::Point2d& point : exhausted_) {
+                                            const double dx = grid_->centreX(cell.x) - point.x;
+                                            const double dy = grid_->centreY(cell.y) - point.y;
+                                            if (dx * dx + dy * dy <= exhausted_sq) return true;
+                                          }
+                                          return false;
+                                        }),
+                         frontier.cells.end());
+  }
+  frontiers_.erase(std::remove_if(frontiers_.begin(), frontiers_.end(),
+                                  [&](const Frontier& f) {
+                                    return static_cast<int>(f.cells.size()) < options_.min_frontier_cells;
+                                  }),
+                   frontiers_.end());
+
+  field_ = std::make_unique<CostToGoField>(*grid_, planner_options_);
+  const double goal_radius = planner_options_.body_radius_m + options_.goal_distance_m;
+  const int reach = static_cast<int>(std::ceil(goal_radius / grid_->resolution()));
+  const double reach_sq = goal_radius * goal_radius / (grid_->resolution() * grid_->resolution());
+  // Per cell the cheapest seed and its frontier: goals of overlapping frontiers are not repeated.
+  cv::Mat1d seed(grid_->height(), grid_->width(), std::numeric_limits<double>::infinity());
+  cv::Mat1i label(grid_->height(), grid_->width(), -1);
+  const double near_target_sq = (goal_radius + 0.3) * (goal_radius + 0.3);
+  for (size_t i = 0; i < frontiers_.size(); ++i) {
+    bool is_target = false;
+    if (target_) {
+      for (const cv::Point& cell : frontiers_[i].cells) {
+        const double dx = grid_->centreX(cell.x) - target_->x, dy = grid_->centreY(cell.y) - target_->y;
+        if (dx * dx + dy * dy <= near_target_sq) {
+          is_target = true;
+          break;
+        }
+      }
+    }
+    const double seed_cost = is_target ? 0.0 : options_.target_switch_penalty_m;
+    for (const cv::Point& cell : frontiers_[i].cells) {
+      for (int dr = -reach; dr <= reach; ++dr) {
+        for (int dc = -reach; dc <= reach; ++dc) {
+          const int c = cell.x + dc, r = cell.y + dr;
+          if (dc * dc + dr * dr > reach_sq || !grid_->contains(c, r) || !field_->traversable(c, r)) continue;
+          if (seed_cost < seed(r, c)) {
+            seed(r, c) = seed_cost;
+            label(r, c) = static_cast<int>(i);
+          }
+        }
+      }
+    }
+  }
+  std::vector<GoalCell> goals;
+  for (int row = 0; row < grid_->height(); ++row) {
+    for (int col = 0; col < grid_->width(); ++col) {
+      if (label(row, col) >= 0) goals.push_back({col, row, seed(row, col), label(row, col)});
+    }
+  }
+  field_->compute(goals);
+  status_.frontiers = frontiers_.size();
+}
+
+bool FrontierExplorer::controlStep(mrpt::nav::CRobot2NavInterface& robot) {
+  if (finished()) {
+    robot.stop(false);
+    return false;
+  }
+  mrpt::math::TPose2D pose, odometry;
+  mrpt::math::TTwist2D velocity;
+  mrpt::system::TTimeStamp stamp;
+  std::string frame_id;
+  if (!robot.getCurrentPoseAndSpeeds(pose, velocity, stamp, odometry, frame_id)) {
+    finish("the robot did not report its pose");
+    robot.stop(true);
+    return false;
+  }
+  const Command command = decide(mrpt::poses::CPose2D(pose), robot.getNavigationTime());
+  status_.speed_command = command.speed;
+  status_.turn_rate_command = command.turn_rate;
+  if (finished()) {
+    robot.stop(false);
+    return false;
+  }
+  mrpt::kinematics::CVehicleVelCmd_DiffDriven velocity_command;
+  velocity_command.lin_vel = command.speed;
+  velocity_command.ang_vel = command.turn_rate;
+  robot.changeSpeeds(velocity_command);
+  return true;
+}
+
+FrontierExplorer::Command FrontierExplorer::lookAround(const mrpt::poses::CPose2D& pose) {
+  if (status_.phase != ExplorerPhase::kLookingAround) {
+    status_.phase = ExplorerPhase::kLookingAround;
+    turned_rad_ = 0.0;
+  } else {
+    turned_rad_ += std::abs(mrpt::math::wrapToPi(pose.phi() - last_phi_));
+  }
+  last_phi_ = pose.phi();
+  if (turned_rad_ >= 2.0 * M_PI) {
+    looked_around_here_ = true;
+    look_around_x_ = pose.x();
+    look_around_y_ = pose.y();
+    status_.phase = ExplorerPhase::kTurning;
+    return {};
+  }
+  return {0.0, options_.max_turn_rate};
+}
+
+FrontierExplorer::Command FrontierExplorer::turnTowards(const mrpt::poses::CPose2D& pose, double x, double y) const {
+  const double error = mrpt::math::wrapToPi(std::atan2(y - pose.y(), x - pose.x()) - pose.phi());
+  double turn_rate = clampAbs(options_.heading_gain * error, options_.max_turn_rate);
+  if (std::abs(turn_rate) < kMinTurnRate) turn_rate = std::copysign(kMinTurnRate, error);
+  return {0.0, turn_rate};
+}
+
+void FrontierExplorer::finish(const std::string& reason) {
+  status_.phase = ExplorerPhase::kFinished;
+  status_.has_target = false;
+  stop_reason_ = reason;
+}
+
+void FrontierExplorer::dropFrontierNear(double x, double y) {
+  exhausted_.emplace_back(x, y);
+  target_.reset();
+  replan();
+}
+
+FrontierExplorer::Command FrontierExplorer::decide(const mrpt::poses::CPose2D& pose, double time_s) {
+  if (!grid_) return {};
+  if (looked_around_here_ && std::hypot(pose.x() - look_around_x_, pose.y() - look_around_y_) > kLookAroundSpacingM) {
+    looked_around_here_ = false;
+  }
+  if (status_.phase == ExplorerPhase::kLookingAround) {
+    const Command turn = lookAround(pose);
+    if (status_.phase == ExplorerPhase::kLookingAround) return turn;
+  }
+  int col = 0, row = 0;
+  if (!grid_->cellAt(pose.x(), pose.y(), col, row)) {
+    finish("the robot is outside its own map");
+    return {};
+  }
+
+  if (!field_->traversable(col, row)) {
+    // The map has closed in (a moving obstacle came close, or a better view put a wall nearer):
+    // move to the nearest cell where the body fits, over free cells only.
+    if (!escape_to_ || status_.phase != ExplorerPhase::kEscaping) {
+      escape_to_.reset();
+      const int reach = static_cast<int>(std::ceil(kEscapeSearchM / grid_->resolution()));
+      std::deque<cv::Point> queue{cv::Point(col, row)};
+      cv::Mat1b seen(grid_->height(), grid_->width(), uint8_t{0});
+      seen(row, col) = 1;
+      while (!queue.empty() && !escape_to_) {
+        const cv::Point cell = queue.front();
+        queue.pop_front();
+        static const int kSteps[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+        for (const auto& step : kSteps) {
+          const int c = cell.x + step[0], r = cell.y + step[1];
+          if (!grid_->contains(c, r) || seen(r, c) || std::abs(c - col) > reach || std::abs(r - row) > reach) continue;
+          seen(r, c) = 1;
+          if (grid_->cellClass(c, r) != NavigationGrid::kFree) continue;
+          if (field_->traversable(c, r)) {
+            escape_to_ = cv::Point2d(grid_->centreX(c), grid_->centreY(r));
+            break;
+          }
+          queue.emplace_back(c, r);
+        }
+      }
+      if (!escape_to_) {
+        if (!looked_around_here_) return lookAround(pose);
+        finish("boxed in: no cell within " + std::to_string(kEscapeSearchM).substr(0, 3) +
+               " m where the robot's body fits in known free space");
+        return {};
+      }
+      status_.phase = ExplorerPhase::kEscaping;
+    }
+    const Command turn = turnTowards(pose, escape_to_->x, escape_to_->y);
+    const double error = mrpt::math::wrapToPi(std::atan2(escape_to_->y - pose.y(), escape_to_->x - pose.x()) - pose.phi());
+    if (std::abs(error) > kFacedRad * 2.0) return turn;
+    return {kEscapeSpeed, clampAbs(options_.heading_gain * error, options_.max_turn_rate)};
+  }
+  if (status_.phase == ExplorerPhase::kEscaping) status_.phase = ExplorerPhase::kTurning;
+  escape_to_.reset();
+
+  if (!field_->reachable(col, row)) {
+    if (!looked_around_here_) return lookAround(pose);
+    if (frontiers_.empty()) {
+      finish("no frontier left: every known free cell borders only known cells");
+    } else {
+      size_t cells = 0;
+      for (const Frontier& frontier : frontiers_) cells += frontier.cells.size();
+      finish("no reachable frontier left: " + std::to_string(frontiers_.size()) + " frontier(s) of " +
+             std::to_string(cells) + " cells lie beyond gaps narrower than the robot or across unknown space");
+    }
+    return {};
+  }
+
+  const std::vector<cv::Point> path = field_->pathFrom(col, row);
+  const cv::Point goal = path.back();
+  const cv::Point2d goal_point(grid_->centreX(goal.x), grid_->centreY(goal.y));
+  if (!target_ || std::hypot(goal_point.x - target_->x, goal_point.y - target_->y) > 1.0) {
+    best_cost_ = field_->cost(col, row);
+    best_cost_time_ = time_s;
+  }
+  target_ = goal_point;
+  status_.has_target = true;
+  status_.target_x = goal_point.x;
+  status_.target_y = goal_point.y;
+  status_.cost_to_go = field_->cost(col, row);
+
+  if (path.size() == 1) {
+    // Arrived: face the nearest cell of the frontier, hold for the map to catch up, and if the
+    // frontier is still there (unknown behind something stereo cannot resolve), drop it.
+    const Frontier& frontier = frontiers_[static_cast<size_t>(field_->label(col, row))];
+    cv::Point2d nearest;
+    double nearest_sq = std::numeric_limits<double>::infinity();
+    for (const cv::Point& cell : frontier.cells) {
+      const double dx = grid_->centreX(cell.x) - pose.x(), dy = grid_->centreY(cell.y) - pose.y();
+      if (dx * dx + dy * dy < nearest_sq) {
+        nearest_sq = dx * dx + dy * dy;
+        nearest = cv::Point2d(grid_->centreX(cell.x), grid_->centreY(cell.y));
+      }
+    }
+    if (status_.phase != ExplorerPhase::kLookingAtFrontier) {
+      status_.phase = ExplorerPhase::kLookingAtFrontier;
+      phase_start_time_ = std::numeric_limits<double>::infinity();
+    }
+    const double error = mrpt::math::wrapToPi(std::atan2(nearest.y - pose.y(), nearest.x - pose.x()) - pose.phi());
+    if (std::abs(error) > kFacedRad && nearest_sq > 1e-6) return turnTowards(pose, nearest.x, nearest.y);
+    phase_start_time_ = std::min(phase_start_time_, time_s);
+    if (time_s - phase_start_time_ >= kLookHoldS) {
+      dropFrontierNear(nearest.x, nearest.y);
+      status_.phase = ExplorerPhase::kTurning;
+    }
+    return {};
+  }
+  if (status_.phase == ExplorerPhase::kLookingAtFrontier) status_.phase = ExplorerPhase::kTurning;
+
+  if (status_.cost_to_go < best_cost_ - kProgressM) {
+    best_cost_ = status_.cost_to_go;
+    best_cost_time_ = time_s;
+  } else if (time_s - best_cost_time_ > options_.stuck_timeout_s) {
+    dropFrontierNear(goal_point.x, goal_point.y);
+    best_cost_time_ = time_s;
+    return {};
+  }
+  return drive(pose, path);
+}
+
+FrontierExplorer::Command FrontierExplorer::drive(const mrpt::poses::CPose2D& pose, const std::vector<cv::Point>& path) {
+  // Carrot: the first path cell at least lookahead_m along the path; and the whole path length,
+  // to brake in time for its end (the edge of the known map).
+  double along = 0.0, remaining = 0.0;
+  cv::Point2d carrot(grid_->centreX(path.back().x), grid_->centreY(path.back().y));
+  bool carrot_set = false;
+  for (size_t i = 1; i < path.size(); ++i) {
+    const double step = std::hypot(path[i].x - path[i - 1].x, path[i].y - path[i - 1].y) * grid_->resolution();
+    remaining += step;
+    along += step;
+    if (!carrot_set && along >= options_.lookahead_m) {
+      carrot = cv::Point2d(grid_->centreX(path[i].x), grid_->centreY(path[i].y));
+      carrot_set = true;
+    }
+  }
+  const double error = mrpt::math::wrapToPi(std::atan2(carrot.y - pose.y(), carrot.x - pose.x()) - pose.phi());
+  if (status_.phase != ExplorerPhase::kDriving && std::abs(error) > kFacedRad) return turnTowards(pose, carrot.x, carrot.y);
+  if (std::abs(error) > options_.turn_in_place_rad) {
+    status_.phase = ExplorerPhase::kTurning;
+    return turnTowards(pose, carrot.x, carrot.y);
+  }
+  status_.phase = ExplorerPhase::kDriving;
+  int col = 0, row = 0;
+  grid_->cellAt(pose.x(), pose.y(), col, row);
+  const double room = grid_->obstacleDistance(col, row) - planner_options_.body_radius_m;
+  const double room_factor = std::max(0.3, std::min(1.0, room / (2.0 * options_.repulsion_distance_m + 1e-9)));
+  double speed = options_.max_speed_mps * room_factor * (1.0 - 0.7 * std::abs(error) / options_.turn_in_place_rad);
+  speed = std::min(speed, std::sqrt(2.0 * options_.braking_deceleration * remaining));
+  return {speed, clampAbs(options_.heading_gain * error, options_.max_turn_rate)};
+}
+
+}  // namespace stereonav

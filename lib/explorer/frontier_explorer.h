@@ -1,0 +1,102 @@
+#pragma once
+
+#include <mrpt/nav/reactive/CRobot2NavInterface.h>
+#include <mrpt/poses/CPose2D.h>
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "explorer/cost_to_go_field.h"
+#include "explorer/explorer_options.h"
+#include "explorer/frontier_finder.h"
+#include "explorer/navigation_grid.h"
+
+namespace stereonav {
+
+enum class ExplorerPhase {
+  kLookingAround,      // a full turn on the spot (at the start, and before giving up)
+  kTurning,            // facing the path before driving it (90 degree field of view)
+  kDriving,            // following the cost-to-go towards the target frontier
+  kLookingAtFrontier,  // arrived: facing the frontier so the cameras see past it
+  kEscaping,           // the map closed in around the robot: back to the nearest traversable cell
+  kFinished,
+};
+
+const char* phaseName(ExplorerPhase phase);
+
+// What the explorer is doing, for the navigation trace.
+struct ExplorerStatus {
+  ExplorerPhase phase = ExplorerPhase::kLookingAround;
+  size_t frontiers = 0;            // frontier clusters in the newest map
+  bool has_target = false;
+  double target_x = 0.0;           // end of the current path (map frame)
+  double target_y = 0.0;
+  double cost_to_go = 0.0;         // metres-equivalent of path left (0 without target)
+  double speed_command = 0.0;
+  double turn_rate_command = 0.0;
+};
+
+// Frontier-based exploration (paper section 5) over the stereo occupancy grid. The robot sits
+// behind MRPT's reactive-navigation boundary, mrpt::nav::CRobot2NavInterface, so the simulator
+// and a real robot driver are interchangeable: each control cycle reads the pose
+// (getCurrentPoseAndSpeeds; the map is built in the same frame, the robot's dead reckoning) and
+// sends a CVehicleVelCmd_DiffDriven (changeSpeeds).
+//
+// Every new map (updateMap) rebuilds the cost-to-go towards all frontiers at once, so a plan the
+// map invalidates (an obstacle appears on the path, a corridor turns out to be a dead end, a
+// frontier closes) is replaced at the next frame without a separate recovery step.
+class FrontierExplorer {
+ public:
+  explicit FrontierExplorer(const ExplorerOptions& options);
+
+  // The newest map, built in the robot's pose frame, and the pose it was last updated at.
+  void updateMap(const DisparityTaggedGrid& grid, const mrpt::poses::CPose2D& pose);
+
+  // One control cycle: reads the robot and commands it. False once exploration has finished
+  // (the robot has been told to stop); stopReason() says why.
+  bool controlStep(mrpt::nav::CRobot2NavInterface& robot);
+
+  bool finished() const { return status_.phase == ExplorerPhase::kFinished; }
+  const std::string& stopReason() const { return stop_reason_; }
+  const ExplorerStatus& status() const { return status_; }
+
+ private:
+  struct Command {
+    double speed = 0.0;
+    double turn_rate = 0.0;
+  };
+
+  void replan();
+  Command decide(const mrpt::poses::CPose2D& pose, double time_s);
+  Command drive(const mrpt::poses::CPose2D& pose, const std::vector<cv::Point>& path);
+  Command turnTowards(const mrpt::poses::CPose2D& pose, double x, double y) const;
+  Command lookAround(const mrpt::poses::CPose2D& pose);
+  void finish(const std::string& reason);
+  void dropFrontierNear(double x, double y);
+
+  ExplorerOptions options_;
+  CostToGoOptions planner_options_;
+  std::vector<mrpt::poses::CPose2D> visited_;
+  std::unique_ptr<NavigationGrid> grid_;
+  std::unique_ptr<CostToGoField> field_;
+  std::vector<Frontier> frontiers_;
+  std::vector<cv::Point2d> exhausted_;  // where frontiers were looked at and dropped
+  std::optional<cv::Point2d> target_;
+  // A look-around: the heading turned so far and the heading at the last cycle.
+  double turned_rad_ = 0.0;
+  double last_phi_ = 0.0;
+  bool looked_around_here_ = false;
+  double look_around_x_ = 0.0;  // where the last full look-around was
+  double look_around_y_ = 0.0;
+  // Progress watch: the lowest cost-to-go reached and when.
+  double best_cost_ = 0.0;
+  double best_cost_time_ = 0.0;
+  double phase_start_time_ = 0.0;
+  std::optional<cv::Point2d> escape_to_;
+  ExplorerStatus status_;
+  std::string stop_reason_;
+};
+
+}  // namespace stereonav

@@ -1,0 +1,24 @@
+#pragma once
+
+#include <opencv2/core.hpp>
+
+#include <vector>
+
+#include "explorer/navigation_grid.h"
+
+namespace stereonav {
+
+// A connected run of frontier cells: known-free cells next to unknown ones, where looking further
+// adds to the map.
+struct Frontier {
+  std::vector<cv::Point> cells;  // (col, row)
+  double centroid_x = 0.0;       // world metres (the grid's frame)
+  double centroid_y = 0.0;
+};
+
+// Frontier cells are free cells with an unknown 4-neighbour; they are grouped by 8-connectivity
+// and groups of fewer than `min_cells` cells are dropped (a lone unknown cell amid free space is
+// a gap in the stereo data, not an opening). Largest first.
+std::vector<Frontier> findFrontiers(const NavigationGrid& grid, int min_cells);
+
+}  // namespace stereonav

@@ -1,0 +1,51 @@
+#pragma once
+
+#include <mrpt/poses/CPose2D.h>
+
+#include <opencv2/core.hpp>
+
+#include <vector>
+
+#include "occupancy_grid/disparity_tagged_grid.h"
+
+namespace stereonav {
+
+// The stereo grid as the planner sees it: each cell free, unknown or occupied (the paper's
+// conservative thresholds, OccupancyScale::classify), and how far each cell is from trouble.
+// Same cells as the DisparityTaggedGrid it was made from (row 0 at min y).
+class NavigationGrid {
+ public:
+  static constexpr uint8_t kFree = 0;
+  static constexpr uint8_t kUnknown = 1;
+  static constexpr uint8_t kOccupied = 2;
+
+  // `visited` are robot positions (odometry frame, the map's): the body stood there, so cells
+  // under a disc of `body_radius_m` around each are free unless the map says occupied (the
+  // cameras never see the floor under the robot, so without this the start is unknown).
+  NavigationGrid(const DisparityTaggedGrid& grid, const std::vector<mrpt::poses::CPose2D>& visited,
+                 double body_radius_m);
+
+  int width() const { return cell_class_.cols; }
+  int height() const { return cell_class_.rows; }
+  double resolution() const { return frame_.resolution; }
+  bool contains(int col, int row) const { return col >= 0 && row >= 0 && col < width() && row < height(); }
+  bool cellAt(double x, double y, int& col, int& row) const;
+  double centreX(int col) const { return frame_.origin_x + (col + 0.5) * frame_.resolution; }
+  double centreY(int row) const { return frame_.origin_y + (row + 0.5) * frame_.resolution; }
+
+  uint8_t cellClass(int col, int row) const { return cell_class_(row, col); }
+  const cv::Mat1b& cellClasses() const { return cell_class_; }
+  // Distance from the cell's centre to the nearest cell that is not free (or to the grid's edge),
+  // counted to that cell's near edge: a disc of this radius at the centre overlaps free cells only.
+  float clearance(int col, int row) const { return clearance_m_(row, col); }
+  // The same to the nearest occupied cell only (the potential field's repulsion).
+  float obstacleDistance(int col, int row) const { return obstacle_distance_m_(row, col); }
+
+ private:
+  GridFrame frame_;
+  cv::Mat1b cell_class_;
+  cv::Mat1f clearance_m_;
+  cv::Mat1f obstacle_distance_m_;
+};
+
+}  // namespace stereonav

@@ -1,0 +1,57 @@
+#include "explorer/simulated_robot_interface.h"
+
+#include <mrpt/core/Clock.h>
+#include <mrpt/kinematics/CVehicleVelCmd_DiffDriven.h>
+
+#include <cmath>
+
+namespace stereonav {
+namespace {
+
+constexpr double kRunEpoch = 946684800.0;  // 2000-01-01T00:00:00Z, as SimulationRecorder stamps frames
+
+}  // namespace
+
+CSimulatedRobotInterface::CSimulatedRobotInterface(const DifferentialDriveRobot& robot, const double& time_s)
+    : robot_(robot), time_s_(time_s) {}
+
+bool CSimulatedRobotInterface::getCurrentPoseAndSpeeds(mrpt::math::TPose2D& pose,
+                                                       mrpt::math::TTwist2D& velocity_global,
+                                                       mrpt::system::TTimeStamp& timestamp,
+                                                       mrpt::math::TPose2D& odometry, std::string& frame_id) {
+  odometry = robot_.odometry().asTPose();
+  pose = odometry;
+  velocity_global.vx = robot_.speed() * std::cos(pose.phi);
+  velocity_global.vy = robot_.speed() * std::sin(pose.phi);
+  velocity_global.omega = robot_.turnRate();
+  timestamp = mrpt::Clock::fromDouble(kRunEpoch + time_s_);
+  frame_id = "odom";
+  return true;
+}
+
+bool CSimulatedRobotInterface::changeSpeeds(const mrpt::kinematics::CVehicleVelCmd& command) {
+  const auto* differential = dynamic_cast<const mrpt::kinematics::CVehicleVelCmd_DiffDriven*>(&command);
+  if (differential == nullptr) return false;
+  speed_ = differential->lin_vel;
+  turn_rate_ = differential->ang_vel;
+  return true;
+}
+
+bool CSimulatedRobotInterface::stop(bool /*is_emergency_stop*/) {
+  speed_ = 0.0;
+  turn_rate_ = 0.0;
+  return true;
+}
+
+bool CSimulatedRobotInterface::senseObstacles(mrpt::maps::CSimplePointsMap& /*obstacles*/,
+                                              mrpt::system::TTimeStamp& /*timestamp*/) {
+  return false;
+}
+
+mrpt::kinematics::CVehicleVelCmd::Ptr CSimulatedRobotInterface::getEmergencyStopCmd() { return getStopCmd(); }
+
+mrpt::kinematics::CVehicleVelCmd::Ptr CSimulatedRobotInterface::getStopCmd() {
+  return std::make_shared<mrpt::kinematics::CVehicleVelCmd_DiffDriven>();
+}
+
+}  // namespace stereonav

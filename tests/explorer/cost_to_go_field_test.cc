@@ -1,0 +1,149 @@
+#include "explorer/cost_to_go_field.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "test_grids.h"
+
+namespace stereonav {
+namespace {
+
+CostToGoOptions plainOptions(double body_radius) {
+  CostToGoOptions options;
+  options.body_radius_m = body_radius;
+  options.repulsion_distance_m = 0.0;
+  options.repulsion_weight = 0.0;
+  return options;
+}
+
+double pathLength(const std::vector<cv::Point2d>& path) {
+  double length = 0.0;
+  for (size_t i = 1; i < path.size(); ++i) length += cv::norm(path[i] - path[i - 1]);
+  return length;
+}
+
+// Distance from a point to the axis-aligned rectangle [x0, x1] x [y0, y1].
+double distanceToRect(const cv::Point2d& p, double x0, double y0, double x1, double y1) {
+  const double dx = std::max({x0 - p.x, 0.0, p.x - x1});
+  const double dy = std::max({y0 - p.y, 0.0, p.y - y1});
+  return std::hypot(dx, dy);
+}
+
+// 4 m x 4 m of free floor at 0.1 m cells.
+TestGrid openFloor() {
+  TestGrid cells(40, 40);
+  cells.free(0, 0, 39, 39);
+  return cells;
+}
+
+TEST(CostToGoFieldTest, StraightPathOnOpenFloorHasTheStraightLength) {
+  const TestGrid cells = openFloor();
+  const NavigationGrid grid(cells.grid(), {}, 0.25);
+  const auto path = planPath(grid, plainOptions(0.25), 1.05, 2.05, 3.05, 2.05);
+  ASSERT_FALSE(path.empty());
+  EXPECT_NEAR(pathLength(path), 2.0, 1e-9);
+  EXPECT_NEAR(cv::norm(path.front() - cv::Point2d(1.05, 2.05)), 0.0, 1e-9);
+  EXPECT_NEAR(cv::norm(path.back() - cv::Point2d(3.05, 2.05)), 0.0, 1e-9);
+}
+
+TEST(CostToGoFieldTest, GoesAroundAWallKeepingTheBodyClearOfIt) {
+  TestGrid cells = openFloor();
+  cells.occupied(20, 0, 20, 29);  // a wall x in [2.0, 2.1], y in [0, 3.0], open above
+  const NavigationGrid grid(cells.grid(), {}, 0.25);
+  const auto path = planPath(grid, plainOptions(0.25), 1.05, 1.05, 3.05, 1.05);
+  ASSERT_FALSE(path.empty());
+  double highest = 0.0;
+  for (const cv::Point2d& p : path) {
+    EXPECT_GE(distanceToRect(p, 2.0, 0.0, 2.1, 3.0), 0.25) << p;
+    highest = std::max(highest, p.y);
+  }
+  EXPECT_GE(highest, 3.25);
+  // No shorter than the straight legs to the inflated wall end (2.05, 3.25) and back down.
+  EXPECT_GE(pathLength(path), 2.0 * std::hypot(1.0, 3.25 - 1.05));
+  // No longer than this hand-built grid path (cells whose centres are 0.25 m from the wall, no
+  // corner cutting): north 1.4 to (1.05, 2.45), diagonal 7 cells to (1.75, 3.15), north 0.1,
+  // east 0.6 over the wall top at y = 3.25 to (2.35, 3.25), and the mirror image down.
+  EXPECT_LE(pathLength(path), 2.0 * (1.4 + 0.7 * M_SQRT2 + 0.1) + 0.6 + 1e-9);
+}
+
+TEST(CostToGoFieldTest, NeverEntersUnknownCellsAndStaysABodyAwayFromThem) {
+  TestGrid cells = openFloor();
+  cells.unknown(18, 0, 22, 29);  // unknown band x in [1.8, 2.3], y in [0, 3.0]
+  const NavigationGrid grid(cells.grid(), {}, 0.25);
+  const auto path = planPath(grid, plainOptions(0.25), 1.05, 1.05, 3.05, 1.05);
+  ASSERT_FALSE(path.empty());
+  for (const cv::Point2d& p : path) EXPECT_GE(distanceToRect(p, 1.8, 0.0, 2.3, 3.0), 0.25) << p;
+  // Across the whole floor the band cuts it in two: no path at all.
+  cells.unknown(18, 0, 22, 39);
+  EXPECT_TRUE(planPath(NavigationGrid(cells.grid(), {}, 0.25), plainOptions(0.25), 1.05, 1.05, 3.05, 1.05).empty());
+}
+
+TEST(CostToGoFieldTest, DoorNarrowerThanTheInflatedBodyIsClosed) {
+  TestGrid cells = openFloor();
+  // A wall along x = 2.0 .. 2.1 with a door at y in [1.5, 1.5 + width).
+  const auto with_door = [&](int cells_wide) {
+    TestGrid walled = cells;
+    walled.occupied(20, 0, 20, 39).free(20, 15, 20, 15 + cells_wide - 1);
+    return walled;
+  };
+  // Body radius 0.25: the door's middle cell centre must be 0.25 from both jambs, so 0.5 m of
+  // door is needed (5 cells: the middle centre is exactly 0.25 from each side).
+  const TestGrid narrow = with_door(4);
+  EXPECT_TRUE(planPath(NavigationGrid(narrow.grid(), {}, 0.25), plainOptions(0.25), 1.05, 1.55, 3.05, 1.55).empty());
+  const TestGrid wide = with_door(5);
+  const auto path = planPath(NavigationGrid(wide.grid(), {}, 0.25), plainOptions(0.25), 1.05, 1.55, 3.05, 1.55);
+  ASSERT_FALSE(path.empty());
+  for (const cv::Point2d& p : path) {
+    if (p.x > 1.9 && p.x < 2.2) {
+      EXPECT_NEAR(p.y, 1.75, 1e-9) << "through the door's middle";
+    }
+  }
+}
+
+TEST(CostToGoFieldTest, NoPathIntoAClosedRoomOrFromAnUntraversableStart) {
+  TestGrid cells = openFloor();
+  cells.occupied(25, 25, 35, 35).free(26, 26, 34, 34);
+  const NavigationGrid grid(cells.grid(), {}, 0.25);
+  EXPECT_TRUE(planPath(grid, plainOptions(0.25), 1.05, 1.05, 3.05, 3.05).empty());
+  // Start 0.15 m from the grid's edge: the body does not fit there.
+  EXPECT_TRUE(planPath(grid, plainOptions(0.25), 0.15, 1.05, 2.05, 1.05).empty());
+}
+
+TEST(CostToGoFieldTest, RepulsionKeepsThePathAwayFromAWallItRunsAlong) {
+  TestGrid cells(60, 30);
+  cells.free(0, 0, 59, 29).occupied(0, 0, 59, 0);  // a wall along y in [0, 0.1]
+  const NavigationGrid grid(cells.grid(), {}, 0.25);
+  CostToGoOptions repelled = plainOptions(0.25);
+  repelled.repulsion_distance_m = 1.0;
+  repelled.repulsion_weight = 4.0;
+  const auto farthest = [](const std::vector<cv::Point2d>& path) {
+    double y = 0.0;
+    for (const cv::Point2d& p : path) y = std::max(y, p.y);
+    return y;
+  };
+  const auto plain = planPath(grid, plainOptions(0.25), 0.55, 0.45, 5.45, 0.45);
+  const auto with_field = planPath(grid, repelled, 0.55, 0.45, 5.45, 0.45);
+  ASSERT_FALSE(plain.empty());
+  ASSERT_FALSE(with_field.empty());
+  EXPECT_NEAR(farthest(plain), 0.45, 1e-9);  // the shortest path hugs the wall
+  EXPECT_GE(farthest(with_field), 0.85);     // the potential field pushes it out
+}
+
+TEST(CostToGoFieldTest, EveryCellDescendsToTheCheapestGoalAndInheritsItsLabel) {
+  const TestGrid cells = openFloor();
+  const NavigationGrid grid(cells.grid(), {}, 0.25);
+  CostToGoField field(grid, plainOptions(0.25));
+  // Goal 0 at x = 0.55, goal 1 at x = 3.45, both at y = 2.05; goal 1 starts 1 m dearer.
+  field.compute({GoalCell{5, 20, 0.0, 0}, GoalCell{34, 20, 1.0, 1}});
+  EXPECT_EQ(field.label(10, 20), 0);
+  EXPECT_NEAR(field.cost(10, 20), 0.5, 1e-9);
+  // Midway is x = 2.0 in distance, but goal 1's extra metre moves the split to x = 2.5.
+  EXPECT_EQ(field.label(23, 20), 0);  // x 2.35: 1.8 vs 1.1 + 1
+  EXPECT_EQ(field.label(26, 20), 1);  // x 2.65: 2.1 vs 0.8 + 1
+  EXPECT_EQ(field.pathFrom(26, 20).back(), cv::Point(34, 20));
+}
+
+}  // namespace
+}  // namespace stereonav
