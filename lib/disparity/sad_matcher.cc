@@ -336,27 +336,32 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
     }
     for (int g = 0; g < groups; ++g) {
       const int first = groups == 1 ? 0 : g, last = groups == 1 ? cameras : g + 1;
-      Acc* ring_row = ring + (static_cast<size_t>(g) * window + slot) * row_size;
-      Acc* sums = column_sums + g * column_stride + padded;
+      // Locals, so that the compiler keeps them in registers across the stores below.
+      const uchar* const first_candidates = candidates[first];
+      const ptrdiff_t first_x_step = candidate_x_step[first];
+      Acc* const ring_row = ring + (static_cast<size_t>(g) * window + slot) * row_size;
+      Acc* const sums = column_sums + g * column_stride + padded;
+      const int count = padded;
       for (int xe = 0; xe < nx; ++xe) {
         const int x = x0 - r + xe;
         const cv::v_uint8x16 reference = cv::v_setall_u8(reference_row[x]);
-        for (int b = 0; b < padded; b += kByteLanes) {
+        const uchar* const own_candidates = first_candidates + x * first_x_step;
+        Acc* const slot_entry = ring_row + static_cast<size_t>(xe) * count;
+        Acc* const sum_entry = sums + static_cast<size_t>(xe) * count;
+        for (int b = 0; b < count; b += kByteLanes) {
           Vec entering[kVectorsPerBytes];
-          Lanes::widen(cv::v_absdiff(reference, cv::v_load(candidates[first] + x * candidate_x_step[first] + b)),
-                       entering);
+          Lanes::widen(cv::v_absdiff(reference, cv::v_load(own_candidates + b)), entering);
           for (int c = first + 1; c < last; ++c) {
             Vec more[kVectorsPerBytes];
             Lanes::widen(cv::v_absdiff(reference, cv::v_load(candidates[c] + x * candidate_x_step[c] + b)), more);
             for (int i = 0; i < kVectorsPerBytes; ++i) entering[i] = Lanes::add(entering[i], more[i]);
           }
-          Acc* slot_entry = ring_row + static_cast<size_t>(xe) * padded + b;
-          Acc* sum_entry = sums + static_cast<size_t>(xe) * padded + b;
           for (int i = 0; i < kVectorsPerBytes; ++i) {
-            const Vec leaving = cv::v_load(slot_entry + i * Lanes::kCount);
-            cv::v_store(slot_entry + i * Lanes::kCount, entering[i]);
-            cv::v_store(sum_entry + i * Lanes::kCount,
-                        Lanes::slide(cv::v_load(sum_entry + i * Lanes::kCount), entering[i], leaving));
+            Acc* const ring_lanes = slot_entry + b + i * Lanes::kCount;
+            Acc* const sum_lanes = sum_entry + b + i * Lanes::kCount;
+            const Vec leaving = cv::v_load(ring_lanes);
+            cv::v_store(ring_lanes, entering[i]);
+            cv::v_store(sum_lanes, Lanes::slide(cv::v_load(sum_lanes), entering[i], leaving));
           }
         }
       }
@@ -380,22 +385,27 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
       }
     }
     const Acc* curve = kCombine ? combined : scores;  // the combined score of every candidate
+    // Locals, so that the compiler keeps them in registers across the stores below.
+    Acc* const group_scores = scores;
+    const Acc* const all_sums = column_sums;
+    const size_t stride = column_stride;
+    const int count = padded, chunk_count = chunks, unpadded_chunks = whole_chunks;
     float* disparity_row = out.disparity.ptr<float>(y);
     int* best_row = out.best_score.ptr<int>(y);
     int* sum_row = out.score_sum.ptr<int>(y);
     Vec sorted[kMaxCameras];
     for (int x = region.x0; x < region.x1; ++x) {
       // Columns entering and leaving the window, relative to each group's column sums.
-      const size_t entering = static_cast<size_t>(x - x0 + 2 * r + 1) * padded;
-      const size_t leaving = static_cast<size_t>(x - x0) * padded;
+      const size_t entering = static_cast<size_t>(x - x0 + 2 * r + 1) * count;
+      const size_t leaving = static_cast<size_t>(x - x0) * count;
       Vec best = Lanes::all(kMaxScore);
       cv::v_int32x4 score_sum = cv::v_setall_s32(0);
-      for (int chunk = 0; chunk < chunks; ++chunk) {
+      for (int chunk = 0; chunk < chunk_count; ++chunk) {
         const int b = chunk * Lanes::kCount;
         Vec score;
         for (int g = 0; g < groups; ++g) {
-          Acc* group_score = scores + g * padded + b;
-          const Acc* sums = column_sums + g * column_stride + b;
+          Acc* const group_score = group_scores + g * count + b;
+          const Acc* const sums = all_sums + g * stride + b;
           Vec value = Lanes::slide(cv::v_load(group_score), cv::v_load(sums + entering), cv::v_load(sums + leaving));
           cv::v_store(group_score, value);
           if constexpr (!kCombine) {
@@ -415,10 +425,10 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
           for (int k = 1; k < kept; ++k) score = Lanes::add(score, sorted[k]);
           cv::v_store(combined + b, score);
         }
-        if (chunk >= whole_chunks) {
+        if (chunk >= unpadded_chunks) {
           // Scores are never negative: OR with the all-ones-but-sign padding makes those lanes
           // the largest score, AND with its complement makes them zero.
-          const Vec& pad = padding[chunk - whole_chunks];
+          const Vec& pad = padding[chunk - unpadded_chunks];
           score_sum += Lanes::widenSum(score & ~pad);
           score = score | pad;
         } else {
@@ -429,7 +439,7 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
       // The lowest score, then the first (smallest) disparity that has it: the lanes equal to it
       // as a bit mask, 64 candidates at a time, without data-dependent branches inside a block.
       const Acc best_score = static_cast<Acc>(cv::v_reduce_min(best));
-      const int j = firstLaneEqual<Lanes>(curve, chunks, Lanes::all(best_score));
+      const int j = firstLaneEqual<Lanes>(curve, chunk_count, Lanes::all(best_score));
       float disparity = static_cast<float>(min_disparity + j);
       if (subpixel && j > 0 && j < disparities - 1) {
         const double before = curve[j - 1], after = curve[j + 1];
