@@ -19,7 +19,12 @@ void textureMap(const cv::Mat1b& reference, int window, double sigma, cv::Mat1f&
 
 void rejectLowTexture(cv::Mat1f& disparity, const cv::Mat1f& texture, double threshold) {
   CV_Assert(disparity.size() == texture.size());
-  disparity.setTo(kInvalidDisparity, texture <= threshold);
+  const float minimum = static_cast<float>(threshold);
+  for (int y = 0; y < disparity.rows; ++y) {
+    float* row = disparity.ptr<float>(y);
+    const float* texture_row = texture.ptr<float>(y);
+    for (int x = 0; x < disparity.cols; ++x) row[x] = texture_row[x] > minimum ? row[x] : kInvalidDisparity;
+  }
 }
 
 void rejectAmbiguousMatches(cv::Mat1f& disparity, const SadMatch& match, double threshold) {
