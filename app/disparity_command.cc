@@ -137,6 +137,15 @@ int runDisparityCommand(const std::vector<std::string>& arguments) {
                      std::to_string(frame.reference.cols));
   }
   validateStereoOptions(options);
+  cv::Mat1f ground_truth;
+  if (ground_truth_path) {
+    ground_truth = loadMiddleburyGroundTruth(*ground_truth_path, *ground_truth_scale);
+    if (ground_truth.size() != frame.reference.size()) {
+      throw std::runtime_error(*ground_truth_path + ": ground truth is " + std::to_string(ground_truth.cols) + "x" +
+                               std::to_string(ground_truth.rows) + ", the reference " + reference_path + " is " +
+                               std::to_string(frame.reference.cols) + "x" + std::to_string(frame.reference.rows));
+    }
+  }
 
   const cv::Mat1f disparity = computeDisparity(frame, options);
   writeDisparityImage(out_path, disparity);
@@ -145,8 +154,7 @@ int runDisparityCommand(const std::vector<std::string>& arguments) {
             << frame.secondaries.size() << " secondary view" << (frame.secondaries.size() > 1 ? "s" : "")
             << ", backend " << toString(options.backend) << ")\n";
   if (ground_truth_path) {
-    const DisparityEvaluation result =
-        evaluateDisparity(disparity, loadMiddleburyGroundTruth(*ground_truth_path, *ground_truth_scale));
+    const DisparityEvaluation result = evaluateDisparity(disparity, ground_truth);
     char line[200];
     std::snprintf(line, sizeof(line),
                   "evaluation: density %.2f%%  bad-1.0 %.2f%%  bad-2.0 %.2f%%  mean abs error %.3f px  (%d known pixels)\n",

@@ -117,6 +117,13 @@ TEST_F(DisparityCommandTest, ImagesOfDifferentSizesAreRejected) {
               1, "small.png: image is 200x150");
 }
 
+TEST_F(DisparityCommandTest, GroundTruthOfAnotherSizeIsRejectedBeforeMatching) {
+  const cv::Mat small = cv::imread(kData + "truedisp.row3.col3.pgm")(cv::Rect(0, 0, 200, 150));
+  ASSERT_TRUE(cv::imwrite(path("gt.png"), small));
+  expectError(runBinocular("--out " + path("out.pfm") + " --gt " + path("gt.png") + " --gt-scale 16"), 1,
+              "gt.png: ground truth is 200x150");
+}
+
 TEST_F(DisparityCommandTest, MalformedCameraIsRejected) {
   expectError(run("--config " + path("stereo.ini") + " --ref " + kData + "scene1.row3.col3.ppm --cam " + kData +
                   "scene1.row3.col4.ppm:1 --out " + path("out.pfm")),
