@@ -49,7 +49,11 @@ void saveScene(const mrpt::maps::CMetricMap& map, const std::vector<mrpt::poses:
     return mrpt::math::TPoint3D(pose.x(), pose.y(), kPathHeight);
   };
   if (path.size() >= 2) {
-    auto line = mrpt::opengl::CSetOfLines::Create();
+    // Made and destroyed by MRPT's own code (CreateObject), not by the inline Create(): the
+    // packaged headers declare a 32-byte alignment that MRPT's allocations do not give, which
+    // UBSan reports in any destructor compiled here.
+    auto line = std::dynamic_pointer_cast<mrpt::opengl::CSetOfLines>(
+        mrpt::opengl::CSetOfLines::CreateObject());
     line->setColor(1.0f, 0.0f, 0.0f);
     line->setLineWidth(2.0f);
     line->appendLine(point(path[0]), point(path[1]));
