@@ -28,7 +28,8 @@ constexpr const char* kUsage =
     "A damaged rawlog is mapped up to the damage; Ctrl-C stops after the current frame. Both\n"
     "still write every output.\n"
     "Exit status: 0 the whole rawlog was mapped; 3 partial map (damaged rawlog or Ctrl-C),\n"
-    "outputs written; 2 usage error; 1 any other error.\n";
+    "outputs written; 1 no frame could be mapped (outputs hold an empty map) or any other\n"
+    "error; 2 usage error.\n";
 
 constexpr int kPartialMapStatus = 3;
 
@@ -71,6 +72,10 @@ int runMapCommand(const std::vector<std::string>& arguments) {
             << "stereonav map: wrote " << job.output_prefix
             << ".{gridmap,png,yaml,pgm,3Dscene,stats.json}"
             << (job.virtual_scan_rawlog.empty() ? "" : " and " + job.virtual_scan_rawlog) << "\n";
+  if (report.frames_mapped == 0) {
+    std::cerr << "stereonav map: no frame of " << job.rawlog_path << " could be mapped\n";
+    return 1;
+  }
   return report.complete() ? 0 : kPartialMapStatus;
 }
 

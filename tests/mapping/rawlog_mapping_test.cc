@@ -250,5 +250,18 @@ TEST_F(RawlogMappingTest, CommandNamesAnUnknownKeyAndTheFile) {
   EXPECT_FALSE(fs::exists(path("typo.gridmap")));
 }
 
+TEST_F(RawlogMappingTest, CommandFailsWhenEveryFrameIsSkippedAndSaysWhy) {
+  std::ofstream(path("small_rig.ini")) << "[rig]\nwidth = 160\nheight = 120\nfocal_px = 80\ncx = 79.5\ncy = 59.5\n";
+  EXPECT_EQ(runMapCommand("--config " + path("small_rig.ini") + " --rawlog " + path("full.rawlog") +
+                          " --out " + path("skipped") + " 2>" + path("skipped.err")),
+            1);
+  const std::string message = readBytes(path("skipped.err"));
+  EXPECT_NE(message.find("skipped 8 of the rawlog's stereo frames: 8 wrong image format"), std::string::npos)
+      << message;
+  EXPECT_NE(message.find("no frame of " + path("full.rawlog") + " could be mapped"), std::string::npos) << message;
+  expectOutputs("skipped");
+  EXPECT_NE(readBytes(path("skipped.stats.json")).find("\"wrong_image_format\": 8"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace stereonav
