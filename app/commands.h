@@ -10,5 +10,6 @@ namespace stereonav::app {
 int runDisparityCommand(const std::vector<std::string>& arguments);
 int runSimulateCommand(const std::vector<std::string>& arguments);
 int runMapCommand(const std::vector<std::string>& arguments);
+int runExploreCommand(const std::vector<std::string>& arguments);
 
 }  // namespace stereonav::app

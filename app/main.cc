@@ -21,6 +21,8 @@ const Command kCommands[] = {
      stereonav::app::runSimulateCommand},
     {"map", "replay a rawlog through the stereo mapping pipeline into an occupancy grid",
      stereonav::app::runMapCommand},
+    {"explore", "explore a simulated world closed-loop: stereo mapping plus frontier exploration",
+     stereonav::app::runExploreCommand},
 };
 
 void printUsage(std::ostream& out) {

@@ -15,16 +15,24 @@ struct ExplorerOptions {
   // to (1 + repulsion_weight) times its length, so paths keep to the middle of free space.
   double repulsion_distance_m = 0.6;
   double repulsion_weight = 4.0;
+  // Unknown islands of at most this many cells amid free cells hold mixed evidence, not unseen
+  // space: they count as free (NavigationGrid).
+  int max_hole_cells = 4;
+  // Obstacles known only from readings below this disparity are worth a closer look
+  // (NavigationGridOptions::precise_min_disparity). 0: none.
+  double precise_min_disparity = 3.0;
   // Goals are the traversable cells within this distance of a frontier cell.
-  double goal_distance_m = 0.5;
+  double goal_distance_m = 0.2;
   // Frontier clusters of fewer cells are stereo noise, not openings.
   int min_frontier_cells = 3;
   // Cost (metres of path) added to every frontier but the current target, so that the robot
   // does not dither between two frontiers at similar distances.
   double target_switch_penalty_m = 2.0;
-  // A frontier the robot has reached and looked at without it disappearing (unknown behind
-  // something stereo cannot see) is dropped within this radius of where it looked at it.
-  double exhausted_frontier_radius_m = 0.6;
+  // When the robot has reached a frontier and faced it, the frontier cells still left within
+  // this range and inside the field of view are dropped: looking again from there would not
+  // resolve them (unknown behind something stereo cannot see, e.g. a textureless wall).
+  double looked_at_range_m = 1.0;
+  double field_of_view_deg = 90.0;  // of the reference camera (paper section 2.1)
   // Reactive control.
   double max_speed_mps = 1.5;
   double max_turn_rate = 1.2;  // rad/s
@@ -34,16 +42,19 @@ struct ExplorerOptions {
   // is within this angle of its heading, so it has looked where it is going before driving.
   double turn_in_place_rad = 0.6;
   double lookahead_m = 0.6;
-  // A full turn on the spot at the start, so the first plan sees all around.
+  // A full turn on the spot at the start, so the first plan sees all around, at a rate slow
+  // enough for every direction to stay in view for the several frames its cells need to turn
+  // free (the grid's update rule needs a few CLEAR updates, paper section 3.4).
   bool initial_look_around = true;
+  double look_around_turn_rate = 1.0;  // rad/s
   // No progress towards any goal for this long: the target is dropped as unreachable.
   double stuck_timeout_s = 15.0;
 };
 
 // Section [explorer]: robot_radius_m, safety_margin_m, repulsion_distance_m, repulsion_weight,
-// goal_distance_m, min_frontier_cells, target_switch_penalty_m, exhausted_frontier_radius_m,
+// max_hole_cells, precise_min_disparity, goal_distance_m, min_frontier_cells, target_switch_penalty_m, looked_at_range_m, field_of_view_deg,
 // max_speed_mps, max_turn_rate, braking_deceleration, heading_gain, turn_in_place_deg,
-// lookahead_m, initial_look_around, stuck_timeout_s.
+// lookahead_m, initial_look_around, look_around_turn_rate, stuck_timeout_s.
 ExplorerOptions loadExplorerOptions(IniSection& section);
 
 }  // namespace stereonav

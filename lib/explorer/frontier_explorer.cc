@@ -13,7 +13,7 @@ namespace {
 
 // Facing counts as done within this heading error; turning on the spot never goes slower than
 // kMinTurnRate, so it ends.
-constexpr double kFacedRad = 0.12;
+constexpr double kFacedRad = 0.2;
 constexpr double kMinTurnRate = 0.25;
 // After facing a frontier the robot holds still this long (two frames at 5 Hz) so that the map
 // sees what is behind it before the frontier is judged.
@@ -27,6 +27,9 @@ constexpr double kVisitSpacingM = 0.1;
 // How far the robot searches for a traversable cell when the map has closed in on it.
 constexpr double kEscapeSearchM = 1.5;
 constexpr double kEscapeSpeed = 0.2;
+// Within this much path of its goal the robot has arrived: it turns to look rather than creep
+// cell by cell along the goal region's edge as the frontier recedes.
+constexpr double kArrivedM = 0.4;
 
 double clampAbs(double value, double limit) { return std::max(-limit, std::min(limit, value)); }
 
@@ -48,6 +51,9 @@ FrontierExplorer::FrontierExplorer(const ExplorerOptions& options) : options_(op
   planner_options_.body_radius_m = options.robot_radius_m + options.safety_margin_m;
   planner_options_.repulsion_distance_m = options.repulsion_distance_m;
   planner_options_.repulsion_weight = options.repulsion_weight;
+  grid_options_.body_radius_m = options.robot_radius_m;
+  grid_options_.max_hole_cells = options.max_hole_cells;
+  grid_options_.precise_min_disparity = static_cast<float>(options.precise_min_disparity);
   status_.phase = options.initial_look_around ? ExplorerPhase::kLookingAround : ExplorerPhase::kTurning;
   turned_rad_ = 0.0;
 }
@@ -56,23 +62,15 @@ void FrontierExplorer::updateMap(const DisparityTaggedGrid& grid, const mrpt::po
   if (visited_.empty() || std::hypot(pose.x() - visited_.back().x(), pose.y() - visited_.back().y()) >= kVisitSpacingM) {
     visited_.push_back(pose);
   }
-  grid_ = std::make_unique<NavigationGrid>(grid, visited_, options_.robot_radius_m);
+  grid_ = std::make_unique<NavigationGrid>(grid, visited_, grid_options_);
   replan();
 }
 
 void FrontierExplorer::replan() {
   frontiers_ = findFrontiers(*grid_, options_.min_frontier_cells);
-  const double exhausted_sq = options_.exhausted_frontier_radius_m * options_.exhausted_frontier_radius_m;
   for (Frontier& frontier : frontiers_) {
     frontier.cells.erase(std::remove_if(frontier.cells.begin(), frontier.cells.end(),
-                                        [&](const cv::Point& cell) {
-                                          for (const cv::Point2d& point : exhausted_) {
-                                            const double dx = grid_->centreX(cell.x) - point.x;
-                                            const double dy = grid_->centreY(cell.y) - point.y;
-                                            if (dx * dx + dy * dy <= exhausted_sq) return true;
-                                          }
-                                          return false;
-                                        }),
+                                        [&](const cv::Point& cell) { return isDropped(cell.x, cell.y); }),
                          frontier.cells.end());
   }
   frontiers_.erase(std::remove_if(frontiers_.begin(), frontiers_.end(),
@@ -167,7 +165,7 @@ FrontierExplorer::Command FrontierExplorer::lookAround(const mrpt::poses::CPose2
     status_.phase = ExplorerPhase::kTurning;
     return {};
   }
-  return {0.0, options_.max_turn_rate};
+  return {0.0, options_.look_around_turn_rate};
 }
 
 FrontierExplorer::Command FrontierExplorer::turnTowards(const mrpt::poses::CPose2D& pose, double x, double y) const {
@@ -183,8 +181,27 @@ void FrontierExplorer::finish(const std::string& reason) {
   stop_reason_ = reason;
 }
 
-void FrontierExplorer::dropFrontierNear(double x, double y) {
-  exhausted_.emplace_back(x, y);
+bool FrontierExplorer::isDropped(int col, int row) const {
+  const double x = grid_->centreX(col), y = grid_->centreY(row), r = grid_->resolution();
+  const double half_view = options_.field_of_view_deg * M_PI / 360.0;
+  for (const mrpt::poses::CPose2D& pose : looked_from_) {
+    const double dx = x - pose.x(), dy = y - pose.y();
+    if (dx * dx + dy * dy <= options_.looked_at_range_m * options_.looked_at_range_m &&
+        std::abs(mrpt::math::wrapToPi(std::atan2(dy, dx) - pose.phi())) <= half_view) {
+      return true;
+    }
+  }
+  return dropped_.count({std::lround(x / r), std::lround(y / r)}) > 0;
+}
+
+void FrontierExplorer::dropFrontier(size_t index, const mrpt::poses::CPose2D& pose, bool whole) {
+  const double r = grid_->resolution();
+  looked_from_.push_back(pose);
+  if (whole) {
+    for (const cv::Point& cell : frontiers_[index].cells) {
+      dropped_.insert({std::lround(grid_->centreX(cell.x) / r), std::lround(grid_->centreY(cell.y) / r)});
+    }
+  }
   target_.reset();
   replan();
 }
@@ -271,7 +288,7 @@ FrontierExplorer::Command FrontierExplorer::decide(const mrpt::poses::CPose2D& p
   status_.target_y = goal_point.y;
   status_.cost_to_go = field_->cost(col, row);
 
-  if (path.size() == 1) {
+  if (field_->cost(col, row) - field_->cost(goal.x, goal.y) <= kArrivedM) {
     // Arrived: face the nearest cell of the frontier, hold for the map to catch up, and if the
     // frontier is still there (unknown behind something stereo cannot resolve), drop it.
     const Frontier& frontier = frontiers_[static_cast<size_t>(field_->label(col, row))];
@@ -292,7 +309,10 @@ FrontierExplorer::Command FrontierExplorer::decide(const mrpt::poses::CPose2D& p
     if (std::abs(error) > kFacedRad && nearest_sq > 1e-6) return turnTowards(pose, nearest.x, nearest.y);
     phase_start_time_ = std::min(phase_start_time_, time_s);
     if (time_s - phase_start_time_ >= kLookHoldS) {
-      dropFrontierNear(nearest.x, nearest.y);
+      // The faced cell goes in any case, so that every look makes progress.
+      const double r = grid_->resolution();
+      dropped_.insert({std::lround(nearest.x / r), std::lround(nearest.y / r)});
+      dropFrontier(static_cast<size_t>(field_->label(col, row)), pose, nearest_sq < 1e-6);
       status_.phase = ExplorerPhase::kTurning;
     }
     return {};
@@ -303,7 +323,7 @@ FrontierExplorer::Command FrontierExplorer::decide(const mrpt::poses::CPose2D& p
     best_cost_ = status_.cost_to_go;
     best_cost_time_ = time_s;
   } else if (time_s - best_cost_time_ > options_.stuck_timeout_s) {
-    dropFrontierNear(goal_point.x, goal_point.y);
+    dropFrontier(static_cast<size_t>(field_->label(col, row)), pose, true);
     best_cost_time_ = time_s;
     return {};
   }
@@ -335,7 +355,7 @@ FrontierExplorer::Command FrontierExplorer::drive(const mrpt::poses::CPose2D& po
   int col = 0, row = 0;
   grid_->cellAt(pose.x(), pose.y(), col, row);
   const double room = grid_->obstacleDistance(col, row) - planner_options_.body_radius_m;
-  const double room_factor = std::max(0.3, std::min(1.0, room / (2.0 * options_.repulsion_distance_m + 1e-9)));
+  const double room_factor = std::max(0.3, std::min(1.0, room / (options_.repulsion_distance_m + 1e-9)));
   double speed = options_.max_speed_mps * room_factor * (1.0 - 0.7 * std::abs(error) / options_.turn_in_place_rad);
   speed = std::min(speed, std::sqrt(2.0 * options_.braking_deceleration * remaining));
   return {speed, clampAbs(options_.heading_gain * error, options_.max_turn_rate)};

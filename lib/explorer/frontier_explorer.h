@@ -5,6 +5,8 @@
 
 #include <memory>
 #include <optional>
+#include <set>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -74,15 +76,25 @@ class FrontierExplorer {
   Command turnTowards(const mrpt::poses::CPose2D& pose, double x, double y) const;
   Command lookAround(const mrpt::poses::CPose2D& pose);
   void finish(const std::string& reason);
-  void dropFrontierNear(double x, double y);
+  // Cells the robot at `pose` has in view within looked_at_range_m are never frontier again:
+  // looking from there did not resolve them, and as the map changes the frontier may move by a
+  // cell or two without becoming any more resolvable. `whole`: also every current cell of
+  // frontier `index` (given up as unreachable).
+  void dropFrontier(size_t index, const mrpt::poses::CPose2D& pose, bool whole);
+  bool isDropped(int col, int row) const;
 
   ExplorerOptions options_;
   CostToGoOptions planner_options_;
+  NavigationGridOptions grid_options_;
   std::vector<mrpt::poses::CPose2D> visited_;
   std::unique_ptr<NavigationGrid> grid_;
   std::unique_ptr<CostToGoField> field_;
   std::vector<Frontier> frontiers_;
-  std::vector<cv::Point2d> exhausted_;  // where frontiers were looked at and dropped
+  // Views that did not resolve their frontier: the robot's pose when it looked.
+  std::vector<mrpt::poses::CPose2D> looked_from_;
+  // Frontier cells given up whole, by world cell index (round(x / r), round(y / r) of the
+  // centre): the grid grows by whole cells, so these stay valid.
+  std::set<std::pair<long, long>> dropped_;
   std::optional<cv::Point2d> target_;
   // A look-around: the heading turned so far and the heading at the last cycle.
   double turned_rad_ = 0.0;

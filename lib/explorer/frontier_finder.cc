@@ -10,7 +10,9 @@ bool isFrontierCell(const NavigationGrid& grid, int col, int row) {
   static const int kNeighbours[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
   for (const auto& offset : kNeighbours) {
     const int c = col + offset[0], r = row + offset[1];
-    if (grid.contains(c, r) && grid.cellClass(c, r) == NavigationGrid::kUnknown) return true;
+    if (!grid.contains(c, r)) continue;
+    const uint8_t neighbour = grid.cellClass(c, r);
+    if (neighbour == NavigationGrid::kUnknown || neighbour == NavigationGrid::kImprecise) return true;
   }
   return false;
 }

@@ -16,7 +16,8 @@ struct Frontier {
   double centroid_y = 0.0;
 };
 
-// Frontier cells are free cells with an unknown 4-neighbour; they are grouped by 8-connectivity
+// Frontier cells are free cells with an unknown or imprecise 4-neighbour (imprecise: an obstacle
+// seen only from far, which a closer look resolves); they are grouped by 8-connectivity
 // and groups of fewer than `min_cells` cells are dropped (a lone unknown cell amid free space is
 // a gap in the stereo data, not an opening). Largest first.
 std::vector<Frontier> findFrontiers(const NavigationGrid& grid, int min_cells);

@@ -22,20 +22,25 @@ cv::Mat1f distanceToBlocked(const cv::Mat1b& is_clear, double resolution) {
 }  // namespace
 
 NavigationGrid::NavigationGrid(const DisparityTaggedGrid& grid, const std::vector<mrpt::poses::CPose2D>& visited,
-                               double body_radius_m)
+                               const NavigationGridOptions& options)
     : frame_(grid.frame()), cell_class_(grid.height(), grid.width()) {
   const OccupancyScale& scale = grid.scale();
   for (int row = 0; row < grid.height(); ++row) {
     const uint8_t* g = grid.occupancyRow(row);
+    const float* tag = grid.tagRow(row);
     uint8_t* out = cell_class_[row];
     for (int col = 0; col < grid.width(); ++col) {
       switch (scale.classify(g[col])) {
         case CellClass::kFree: out[col] = kFree; break;
         case CellClass::kUnknown: out[col] = kUnknown; break;
-        case CellClass::kOccupied: out[col] = kOccupied; break;
+        case CellClass::kOccupied:
+          out[col] = tag[col] != DisparityTaggedGrid::kNoTag && tag[col] < options.precise_min_disparity ? kImprecise
+                                                                                                         : kOccupied;
+          break;
       }
     }
   }
+  const double body_radius_m = options.body_radius_m;
   const int reach = static_cast<int>(std::ceil(body_radius_m / frame_.resolution));
   for (const mrpt::poses::CPose2D& pose : visited) {
     int centre_col = 0, centre_row = 0;
@@ -49,8 +54,35 @@ NavigationGrid::NavigationGrid(const DisparityTaggedGrid& grid, const std::vecto
       }
     }
   }
+  if (options.max_hole_cells > 0) fillHoles(options.max_hole_cells);
   clearance_m_ = distanceToBlocked(cell_class_ == kFree, frame_.resolution);
-  obstacle_distance_m_ = distanceToBlocked(cell_class_ != kOccupied, frame_.resolution);
+  obstacle_distance_m_ = distanceToBlocked(cell_class_ < kImprecise, frame_.resolution);
+}
+
+void NavigationGrid::fillHoles(int max_hole_cells) {
+  cv::Mat1i labels;
+  cv::Mat stats, centroids;
+  const int count = cv::connectedComponentsWithStats(cell_class_ == kUnknown, labels, stats, centroids, 4, CV_32S);
+  // Per island: small enough, and bordered by free cells only (not by occupied cells, the grid's
+  // edge or, through 4-connectivity, other unknown cells).
+  std::vector<uint8_t> is_hole(static_cast<size_t>(count), 0);
+  for (int label = 1; label < count; ++label) is_hole[label] = stats.at<int>(label, cv::CC_STAT_AREA) <= max_hole_cells;
+  static const int kNeighbours[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+  for (int row = 0; row < height(); ++row) {
+    for (int col = 0; col < width(); ++col) {
+      const int label = labels(row, col);
+      if (label == 0 || !is_hole[label]) continue;
+      for (const auto& offset : kNeighbours) {
+        const int c = col + offset[0], r = row + offset[1];
+        if (!contains(c, r) || (cell_class_(r, c) != kFree && labels(r, c) != label)) is_hole[label] = 0;
+      }
+    }
+  }
+  for (int row = 0; row < height(); ++row) {
+    for (int col = 0; col < width(); ++col) {
+      if (is_hole[labels(row, col)]) cell_class_(row, col) = kFree;
+    }
+  }
 }
 
 bool NavigationGrid::cellAt(double x, double y, int& col, int& row) const {

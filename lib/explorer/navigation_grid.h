@@ -10,20 +10,36 @@
 
 namespace stereonav {
 
-// The stereo grid as the planner sees it: each cell free, unknown or occupied (the paper's
-// conservative thresholds, OccupancyScale::classify), and how far each cell is from trouble.
-// Same cells as the DisparityTaggedGrid it was made from (row 0 at min y).
+struct NavigationGridOptions {
+  // Cells under a disc of this radius around each visited robot position are free unless the map
+  // says occupied: the body stood there (the cameras never see the floor under the robot, so
+  // without this the start is unknown).
+  double body_radius_m = 0.3;
+  // Islands of at most this many unknown cells whose every neighbour is free are free: inside
+  // observed free space such a cell is not unobserved but holds mixed evidence (a stereo spike's
+  // OCC not yet cleared away), and it would otherwise be a frontier and a wall.
+  int max_hole_cells = 0;
+  // Occupied cells whose disparity tag is below this (pixels) were only seen from far away,
+  // where one disparity step spans metres of depth (paper section 3.2): the obstacle is somewhere
+  // in a deep trapezoid. They block the robot like any obstacle, but looking closer resolves
+  // them, so free cells next to them are frontiers. 0: every occupied cell is precise.
+  float precise_min_disparity = 0.0f;
+};
+
+// The stereo grid as the planner sees it: each cell free, unknown, occupied only by imprecise
+// far readings, or occupied (the paper's conservative thresholds, OccupancyScale::classify), and
+// how far each cell is from trouble. Same cells as the DisparityTaggedGrid it was made from
+// (row 0 at min y).
 class NavigationGrid {
  public:
   static constexpr uint8_t kFree = 0;
   static constexpr uint8_t kUnknown = 1;
-  static constexpr uint8_t kOccupied = 2;
+  static constexpr uint8_t kImprecise = 2;
+  static constexpr uint8_t kOccupied = 3;
 
-  // `visited` are robot positions (odometry frame, the map's): the body stood there, so cells
-  // under a disc of `body_radius_m` around each are free unless the map says occupied (the
-  // cameras never see the floor under the robot, so without this the start is unknown).
+  // `visited` are robot positions (odometry frame, the map's).
   NavigationGrid(const DisparityTaggedGrid& grid, const std::vector<mrpt::poses::CPose2D>& visited,
-                 double body_radius_m);
+                 const NavigationGridOptions& options);
 
   int width() const { return cell_class_.cols; }
   int height() const { return cell_class_.rows; }
@@ -38,10 +54,12 @@ class NavigationGrid {
   // Distance from the cell's centre to the nearest cell that is not free (or to the grid's edge),
   // counted to that cell's near edge: a disc of this radius at the centre overlaps free cells only.
   float clearance(int col, int row) const { return clearance_m_(row, col); }
-  // The same to the nearest occupied cell only (the potential field's repulsion).
+  // The same to the nearest occupied or imprecise cell only (the potential field's repulsion).
   float obstacleDistance(int col, int row) const { return obstacle_distance_m_(row, col); }
 
  private:
+  void fillHoles(int max_hole_cells);
+
   GridFrame frame_;
   cv::Mat1b cell_class_;
   cv::Mat1f clearance_m_;

@@ -40,7 +40,7 @@ TestGrid openFloor() {
 
 TEST(CostToGoFieldTest, StraightPathOnOpenFloorHasTheStraightLength) {
   const TestGrid cells = openFloor();
-  const NavigationGrid grid(cells.grid(), {}, 0.25);
+  const NavigationGrid grid(cells.grid(), {}, NavigationGridOptions{});
   const auto path = planPath(grid, plainOptions(0.25), 1.05, 2.05, 3.05, 2.05);
   ASSERT_FALSE(path.empty());
   EXPECT_NEAR(pathLength(path), 2.0, 1e-9);
@@ -51,7 +51,7 @@ TEST(CostToGoFieldTest, StraightPathOnOpenFloorHasTheStraightLength) {
 TEST(CostToGoFieldTest, GoesAroundAWallKeepingTheBodyClearOfIt) {
   TestGrid cells = openFloor();
   cells.occupied(20, 0, 20, 29);  // a wall x in [2.0, 2.1], y in [0, 3.0], open above
-  const NavigationGrid grid(cells.grid(), {}, 0.25);
+  const NavigationGrid grid(cells.grid(), {}, NavigationGridOptions{});
   const auto path = planPath(grid, plainOptions(0.25), 1.05, 1.05, 3.05, 1.05);
   ASSERT_FALSE(path.empty());
   double highest = 0.0;
@@ -71,13 +71,13 @@ TEST(CostToGoFieldTest, GoesAroundAWallKeepingTheBodyClearOfIt) {
 TEST(CostToGoFieldTest, NeverEntersUnknownCellsAndStaysABodyAwayFromThem) {
   TestGrid cells = openFloor();
   cells.unknown(18, 0, 22, 29);  // unknown band x in [1.8, 2.3], y in [0, 3.0]
-  const NavigationGrid grid(cells.grid(), {}, 0.25);
+  const NavigationGrid grid(cells.grid(), {}, NavigationGridOptions{});
   const auto path = planPath(grid, plainOptions(0.25), 1.05, 1.05, 3.05, 1.05);
   ASSERT_FALSE(path.empty());
   for (const cv::Point2d& p : path) EXPECT_GE(distanceToRect(p, 1.8, 0.0, 2.3, 3.0), 0.25) << p;
   // Across the whole floor the band cuts it in two: no path at all.
   cells.unknown(18, 0, 22, 39);
-  EXPECT_TRUE(planPath(NavigationGrid(cells.grid(), {}, 0.25), plainOptions(0.25), 1.05, 1.05, 3.05, 1.05).empty());
+  EXPECT_TRUE(planPath(NavigationGrid(cells.grid(), {}, NavigationGridOptions{}), plainOptions(0.25), 1.05, 1.05, 3.05, 1.05).empty());
 }
 
 TEST(CostToGoFieldTest, DoorNarrowerThanTheInflatedBodyIsClosed) {
@@ -91,9 +91,9 @@ TEST(CostToGoFieldTest, DoorNarrowerThanTheInflatedBodyIsClosed) {
   // Body radius 0.25: the door's middle cell centre must be 0.25 from both jambs, so 0.5 m of
   // door is needed (5 cells: the middle centre is exactly 0.25 from each side).
   const TestGrid narrow = with_door(4);
-  EXPECT_TRUE(planPath(NavigationGrid(narrow.grid(), {}, 0.25), plainOptions(0.25), 1.05, 1.55, 3.05, 1.55).empty());
+  EXPECT_TRUE(planPath(NavigationGrid(narrow.grid(), {}, NavigationGridOptions{}), plainOptions(0.25), 1.05, 1.55, 3.05, 1.55).empty());
   const TestGrid wide = with_door(5);
-  const auto path = planPath(NavigationGrid(wide.grid(), {}, 0.25), plainOptions(0.25), 1.05, 1.55, 3.05, 1.55);
+  const auto path = planPath(NavigationGrid(wide.grid(), {}, NavigationGridOptions{}), plainOptions(0.25), 1.05, 1.55, 3.05, 1.55);
   ASSERT_FALSE(path.empty());
   for (const cv::Point2d& p : path) {
     if (p.x > 1.9 && p.x < 2.2) {
@@ -105,7 +105,7 @@ TEST(CostToGoFieldTest, DoorNarrowerThanTheInflatedBodyIsClosed) {
 TEST(CostToGoFieldTest, NoPathIntoAClosedRoomOrFromAnUntraversableStart) {
   TestGrid cells = openFloor();
   cells.occupied(25, 25, 35, 35).free(26, 26, 34, 34);
-  const NavigationGrid grid(cells.grid(), {}, 0.25);
+  const NavigationGrid grid(cells.grid(), {}, NavigationGridOptions{});
   EXPECT_TRUE(planPath(grid, plainOptions(0.25), 1.05, 1.05, 3.05, 3.05).empty());
   // Start 0.15 m from the grid's edge: the body does not fit there.
   EXPECT_TRUE(planPath(grid, plainOptions(0.25), 0.15, 1.05, 2.05, 1.05).empty());
@@ -114,7 +114,7 @@ TEST(CostToGoFieldTest, NoPathIntoAClosedRoomOrFromAnUntraversableStart) {
 TEST(CostToGoFieldTest, RepulsionKeepsThePathAwayFromAWallItRunsAlong) {
   TestGrid cells(60, 30);
   cells.free(0, 0, 59, 29).occupied(0, 0, 59, 0);  // a wall along y in [0, 0.1]
-  const NavigationGrid grid(cells.grid(), {}, 0.25);
+  const NavigationGrid grid(cells.grid(), {}, NavigationGridOptions{});
   CostToGoOptions repelled = plainOptions(0.25);
   repelled.repulsion_distance_m = 1.0;
   repelled.repulsion_weight = 4.0;
@@ -133,7 +133,7 @@ TEST(CostToGoFieldTest, RepulsionKeepsThePathAwayFromAWallItRunsAlong) {
 
 TEST(CostToGoFieldTest, EveryCellDescendsToTheCheapestGoalAndInheritsItsLabel) {
   const TestGrid cells = openFloor();
-  const NavigationGrid grid(cells.grid(), {}, 0.25);
+  const NavigationGrid grid(cells.grid(), {}, NavigationGridOptions{});
   CostToGoField field(grid, plainOptions(0.25));
   // Goal 0 at x = 0.55, goal 1 at x = 3.45, both at y = 2.05; goal 1 starts 1 m dearer.
   field.compute({GoalCell{5, 20, 0.0, 0}, GoalCell{34, 20, 1.0, 1}});

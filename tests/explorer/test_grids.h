@@ -29,6 +29,14 @@ class TestGrid {
     return fill(col0, row0, col1, row1, grid_.scale().unknown());
   }
 
+  // Disparity tags (the reading that last added OCC evidence).
+  TestGrid& tag(int col0, int row0, int col1, int row1, float disparity) {
+    for (int row = row0; row <= row1; ++row) {
+      for (int col = col0; col <= col1; ++col) grid_.tagRow(row)[col] = disparity;
+    }
+    return *this;
+  }
+
   const DisparityTaggedGrid& grid() const { return grid_; }
 
  private:

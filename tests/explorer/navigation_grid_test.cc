@@ -1,0 +1,65 @@
+#include "explorer/navigation_grid.h"
+
+#include <gtest/gtest.h>
+
+#include "test_grids.h"
+
+namespace stereonav {
+namespace {
+
+TEST(NavigationGridTest, WhereTheRobotStoodIsFreeUnlessTheMapSaysOccupied) {
+  TestGrid cells(20, 20);
+  cells.occupied(10, 10, 10, 10);
+  NavigationGridOptions options;
+  options.body_radius_m = 0.25;
+  const NavigationGrid grid(cells.grid(), {mrpt::poses::CPose2D(1.0, 1.0, 0.0)}, options);
+  // Cell centres within 0.25 m of (1, 1) become free: (0.85, 0.85) is 0.21 m away, (0.75, 0.85)
+  // 0.29 m and (1.25, 1.05) 0.255 m.
+  EXPECT_EQ(grid.cellClass(8, 9), NavigationGrid::kFree);
+  EXPECT_EQ(grid.cellClass(11, 10), NavigationGrid::kFree);
+  EXPECT_EQ(grid.cellClass(8, 8), NavigationGrid::kFree);
+  EXPECT_EQ(grid.cellClass(7, 8), NavigationGrid::kUnknown);
+  EXPECT_EQ(grid.cellClass(10, 10), NavigationGrid::kOccupied);
+  EXPECT_EQ(grid.cellClass(12, 10), NavigationGrid::kUnknown);
+}
+
+TEST(NavigationGridTest, ClearanceIsTheDistanceToTheNearestCellThatIsNotFree) {
+  TestGrid cells(20, 20);
+  cells.free(0, 0, 19, 19).occupied(10, 0, 10, 19);
+  const NavigationGrid grid(cells.grid(), {}, NavigationGridOptions{});
+  // Cell 3's centre is at x = 0.35: the grid's west edge (x = 0) is nearer than the wall (x = 1.0).
+  EXPECT_NEAR(grid.clearance(3, 10), 0.35, 1e-6);
+  EXPECT_NEAR(grid.obstacleDistance(3, 10), 0.35, 1e-6);
+  EXPECT_NEAR(grid.clearance(8, 10), 0.15, 1e-6);  // 0.85 to the wall at 1.0
+  EXPECT_NEAR(grid.obstacleDistance(8, 10), 0.15, 1e-6);
+  EXPECT_NEAR(grid.clearance(10, 10), -0.05, 1e-6);  // blocked cells have no clearance
+}
+
+TEST(NavigationGridTest, SmallUnknownIslandsInsideFreeSpaceAreFreeButNotThoseTouchingObstacles) {
+  TestGrid cells(20, 20);
+  cells.free(0, 0, 19, 19).unknown(5, 5, 6, 6).unknown(10, 5, 12, 6).unknown(15, 5, 15, 5).occupied(16, 5, 16, 5);
+  NavigationGridOptions options;
+  options.max_hole_cells = 4;
+  const NavigationGrid grid(cells.grid(), {}, options);
+  EXPECT_EQ(grid.cellClass(5, 5), NavigationGrid::kFree);      // 4 cells amid free cells
+  EXPECT_EQ(grid.cellClass(10, 5), NavigationGrid::kUnknown);  // 6 cells: too large
+  EXPECT_EQ(grid.cellClass(15, 5), NavigationGrid::kUnknown);  // beside an obstacle
+  options.max_hole_cells = 0;
+  EXPECT_EQ(NavigationGrid(cells.grid(), {}, options).cellClass(5, 5), NavigationGrid::kUnknown);
+}
+
+TEST(NavigationGridTest, ObstaclesSeenOnlyAtLowDisparityAreImprecise) {
+  TestGrid cells(20, 20);
+  cells.free(0, 0, 19, 19).occupied(10, 0, 10, 19).tag(10, 0, 10, 9, 2.5f).tag(10, 10, 10, 19, 3.0f);
+  NavigationGridOptions options;
+  options.precise_min_disparity = 3.0f;
+  const NavigationGrid grid(cells.grid(), {}, options);
+  EXPECT_EQ(grid.cellClass(10, 5), NavigationGrid::kImprecise);
+  EXPECT_EQ(grid.cellClass(10, 15), NavigationGrid::kOccupied);
+  // Both block and repel alike.
+  EXPECT_NEAR(grid.clearance(8, 5), 0.15, 1e-6);
+  EXPECT_NEAR(grid.obstacleDistance(8, 5), 0.15, 1e-6);
+}
+
+}  // namespace
+}  // namespace stereonav
