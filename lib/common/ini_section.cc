@@ -48,6 +48,18 @@ std::string IniSection::getString(const std::string& key, const std::string& def
   return config_.read_string(section_, key, default_value);
 }
 
+double IniSection::getPositive(const std::string& key, double default_value) {
+  const double value = getDouble(key, default_value);
+  if (!(value > 0.0)) throw ConfigError("[" + section_ + "] " + key + ": must be positive");
+  return value;
+}
+
+double IniSection::getNonNegative(const std::string& key, double default_value) {
+  const double value = getDouble(key, default_value);
+  if (!(value >= 0.0)) throw ConfigError("[" + section_ + "] " + key + ": must not be negative");
+  return value;
+}
+
 void IniSection::rejectUnknownKeys() const {
   std::vector<std::string> keys;
   config_.getAllKeys(section_, keys);

@@ -28,6 +28,9 @@ class IniSection {
   int getInt(const std::string& key, int default_value);
   bool getBool(const std::string& key, bool default_value);
   std::string getString(const std::string& key, const std::string& default_value);
+  // As getDouble, and throws ConfigError unless the value is > 0 (>= 0 for getNonNegative).
+  double getPositive(const std::string& key, double default_value);
+  double getNonNegative(const std::string& key, double default_value);
 
   // Throws ConfigError naming the first key of the section that no getter asked for.
   void rejectUnknownKeys() const;
@@ -37,6 +40,16 @@ class IniSection {
   std::string section_;
   std::set<std::string> known_keys_;
 };
+
+// Loads section `name` of `config` with `load` (any `Options load(IniSection&)`), then rejects the
+// keys the loader did not read: the one way a whole options section is read.
+template <typename Load>
+auto loadIniSection(const mrpt::config::CConfigFileBase& config, const std::string& name, Load load) {
+  IniSection section(config, name);
+  auto options = load(section);
+  section.rejectUnknownKeys();
+  return options;
+}
 
 // The known key closest to `key` by edit distance ("" if there are none).
 std::string nearestKey(const std::string& key, const std::set<std::string>& known_keys);

@@ -36,6 +36,27 @@ TEST(IniSectionTest, MalformedNumbersAreReported) {
   EXPECT_THROW(section.getBool("subpixel", false), ConfigError);
 }
 
+TEST(IniSectionTest, SignChecksNameTheKey) {
+  mrpt::config::CConfigFileMemory config("[robot]\nradius_m = 0\nmargin_m = -0.1\nspeed = 1.5\n");
+  IniSection section(config, "robot");
+  EXPECT_DOUBLE_EQ(section.getPositive("speed", 1.0), 1.5);
+  EXPECT_DOUBLE_EQ(section.getNonNegative("radius_m", 1.0), 0.0);
+  try {
+    section.getPositive("radius_m", 1.0);
+    FAIL() << "zero accepted as positive";
+  } catch (const ConfigError& error) {
+    EXPECT_STREQ(error.what(), "[robot] radius_m: must be positive");
+  }
+  EXPECT_THROW(section.getNonNegative("margin_m", 0.0), ConfigError);
+}
+
+TEST(LoadIniSectionTest, RejectsKeysTheLoaderDidNotRead) {
+  mrpt::config::CConfigFileMemory config("[robot]\nspeed = 2\n[typo]\nsped = 2\n");
+  const auto load = [](IniSection& section) { return section.getDouble("speed", 1.0); };
+  EXPECT_DOUBLE_EQ(loadIniSection(config, "robot", load), 2.0);
+  EXPECT_THROW(loadIniSection(config, "typo", load), ConfigError);
+}
+
 TEST(NearestKeyTest, PicksSmallestEditDistance) {
   EXPECT_EQ(nearestKey("max_disparty", {"max_disparity", "min_disparity", "window"}), "max_disparity");
   EXPECT_EQ(nearestKey("anything", {}), "");
