@@ -1,5 +1,7 @@
 #pragma once
 
+#include <cmath>
+
 #include "common/ini_section.h"
 
 namespace stereonav {
@@ -10,7 +12,7 @@ struct ExplorerOptions {
   // The body is a disc of this radius; obstacles AND unknown cells are inflated by it plus the
   // margin, so the body never overlaps a cell that is not known free.
   double robot_radius_m = 0.3;
-  double safety_margin_m = 0.05;
+  double safety_margin_m = 0.1;
   // Potential field: within this distance of the inflated obstacles a cell's step cost grows up
   // to (1 + repulsion_weight) times its length, so paths keep to the middle of free space.
   double repulsion_distance_m = 0.6;
@@ -40,8 +42,8 @@ struct ExplorerOptions {
   double heading_gain = 2.0;
   // With the 90 degree field of view of the rig the robot turns on the spot until the path ahead
   // is within this angle of its heading, so it has looked where it is going before driving.
-  double turn_in_place_rad = 0.6;
-  double lookahead_m = 0.6;
+  double turn_in_place_rad = 25.0 * M_PI / 180.0;
+  double lookahead_m = 0.3;
   // A full turn on the spot at the start, so the first plan sees all around, at a rate slow
   // enough for every direction to stay in view for the several frames its cells need to turn
   // free (the grid's update rule needs a few CLEAR updates, paper section 3.4).

@@ -27,6 +27,13 @@ constexpr double kVisitSpacingM = 0.1;
 // How far the robot searches for a traversable cell when the map has closed in on it.
 constexpr double kEscapeSearchM = 1.5;
 constexpr double kEscapeSpeed = 0.2;
+// Commanded at least kBlockedCommand forward but moving slower than kBlockedSpeed for
+// kBlockedS: the robot is blocked (MRPT's "apparent collision"); it reverses for kBackOffS.
+constexpr double kBlockedCommand = 0.1;
+constexpr double kBlockedSpeed = 0.02;
+constexpr double kBlockedS = 1.0;
+constexpr double kBackOffS = 1.5;
+constexpr double kBackOffSpeed = -0.2;
 // Within this much path of its goal the robot has arrived: it turns to look rather than creep
 // cell by cell along the goal region's edge as the frontier recedes.
 constexpr double kArrivedM = 0.4;
@@ -42,6 +49,7 @@ const char* phaseName(ExplorerPhase phase) {
     case ExplorerPhase::kDriving: return "driving";
     case ExplorerPhase::kLookingAtFrontier: return "looking_at_frontier";
     case ExplorerPhase::kEscaping: return "escaping";
+    case ExplorerPhase::kBackingOff: return "backing_off";
     case ExplorerPhase::kFinished: return "finished";
   }
   return "?";
@@ -136,7 +144,26 @@ bool FrontierExplorer::controlStep(mrpt::nav::CRobot2NavInterface& robot) {
     robot.stop(true);
     return false;
   }
-  const Command command = decide(mrpt::poses::CPose2D(pose), robot.getNavigationTime());
+  const double time_s = robot.getNavigationTime();
+  Command command;
+  if (status_.phase == ExplorerPhase::kBackingOff && time_s < back_off_until_) {
+    command = {kBackOffSpeed, 0.0};
+  } else {
+    if (status_.phase == ExplorerPhase::kBackingOff) status_.phase = ExplorerPhase::kTurning;
+    command = decide(mrpt::poses::CPose2D(pose), time_s);
+    const double speed = std::hypot(velocity.vx, velocity.vy);
+    if (command.speed < kBlockedCommand || speed > kBlockedSpeed) {
+      blocked_since_ = -1.0;
+    } else if (blocked_since_ < 0.0) {
+      blocked_since_ = time_s;
+    } else if (time_s - blocked_since_ >= kBlockedS && !finished()) {
+      robot.sendApparentCollisionEvent();
+      status_.phase = ExplorerPhase::kBackingOff;
+      back_off_until_ = time_s + kBackOffS;
+      blocked_since_ = -1.0;
+      command = {kBackOffSpeed, 0.0};
+    }
+  }
   status_.speed_command = command.speed;
   status_.turn_rate_command = command.turn_rate;
   if (finished()) {
@@ -264,8 +291,11 @@ FrontierExplorer::Command FrontierExplorer::decide(const mrpt::poses::CPose2D& p
 
   if (!field_->reachable(col, row)) {
     if (!looked_around_here_) return lookAround(pose);
-    if (frontiers_.empty()) {
+    if (frontiers_.empty() && looked_from_.empty()) {
       finish("no frontier left: every known free cell borders only known cells");
+    } else if (frontiers_.empty()) {
+      finish("no frontier left: the rest were looked at from up close without resolving (" +
+             std::to_string(looked_from_.size()) + " looks)");
     } else {
       size_t cells = 0;
       for (const Frontier& frontier : frontiers_) cells += frontier.cells.size();

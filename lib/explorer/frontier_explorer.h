@@ -23,6 +23,7 @@ enum class ExplorerPhase {
   kDriving,            // following the cost-to-go towards the target frontier
   kLookingAtFrontier,  // arrived: facing the frontier so the cameras see past it
   kEscaping,           // the map closed in around the robot: back to the nearest traversable cell
+  kBackingOff,         // told to drive but not moving (in contact with something unmapped): reverse
   kFinished,
 };
 
@@ -107,6 +108,10 @@ class FrontierExplorer {
   double best_cost_time_ = 0.0;
   double phase_start_time_ = 0.0;
   std::optional<cv::Point2d> escape_to_;
+  // Blocked watch: since when the robot has been told to move forward without moving, and when
+  // the current back-off ends.
+  double blocked_since_ = -1.0;
+  double back_off_until_ = 0.0;
   ExplorerStatus status_;
   std::string stop_reason_;
 };

@@ -1,0 +1,178 @@
+#include "explorer/frontier_explorer.h"
+
+#include <mrpt/kinematics/CVehicleVelCmd_DiffDriven.h>
+#include <mrpt/math/wrap2pi.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "test_grids.h"
+
+namespace stereonav {
+namespace {
+
+// A robot behind MRPT's navigator interface that moves exactly as commanded (no map of its own),
+// so the tests see what the explorer asks of any robot driver.
+class KinematicRobot : public mrpt::nav::CRobot2NavInterface {
+ public:
+  explicit KinematicRobot(const mrpt::math::TPose2D& pose) : pose_(pose) {}
+
+  bool getCurrentPoseAndSpeeds(mrpt::math::TPose2D& pose, mrpt::math::TTwist2D& velocity,
+                               mrpt::system::TTimeStamp& timestamp, mrpt::math::TPose2D& odometry,
+                               std::string& /*frame_id*/) override {
+    pose = pose_;
+    odometry = pose_;
+    velocity = mrpt::math::TTwist2D(speed_ * std::cos(pose_.phi), speed_ * std::sin(pose_.phi), turn_rate_);
+    timestamp = mrpt::Clock::fromDouble(time_);
+    return true;
+  }
+  bool changeSpeeds(const mrpt::kinematics::CVehicleVelCmd& command) override {
+    const auto& differential = dynamic_cast<const mrpt::kinematics::CVehicleVelCmd_DiffDriven&>(command);
+    speed_ = differential.lin_vel;
+    turn_rate_ = differential.ang_vel;
+    return true;
+  }
+  bool stop(bool /*is_emergency_stop*/) override {
+    speed_ = turn_rate_ = 0.0;
+    ++stops_;
+    return true;
+  }
+  mrpt::kinematics::CVehicleVelCmd::Ptr getEmergencyStopCmd() override { return getStopCmd(); }
+  mrpt::kinematics::CVehicleVelCmd::Ptr getStopCmd() override {
+    return std::make_shared<mrpt::kinematics::CVehicleVelCmd_DiffDriven>();
+  }
+  bool senseObstacles(mrpt::maps::CSimplePointsMap& /*obstacles*/, mrpt::system::TTimeStamp& /*stamp*/) override {
+    return false;
+  }
+  double getNavigationTime() override { return time_; }
+  void resetNavigationTimer() override {}
+
+  void step(double dt) {
+    pose_.x += speed_ * std::cos(pose_.phi) * dt;
+    pose_.y += speed_ * std::sin(pose_.phi) * dt;
+    pose_.phi = mrpt::math::wrapToPi(pose_.phi + turn_rate_ * dt);
+    turned_ += std::abs(turn_rate_ * dt);
+    time_ += dt;
+  }
+
+  mrpt::math::TPose2D pose_;
+  double speed_ = 0.0;
+  double turn_rate_ = 0.0;
+  double time_ = 0.0;
+  double turned_ = 0.0;
+  int stops_ = 0;
+};
+
+ExplorerOptions testOptions() {
+  ExplorerOptions options;
+  options.initial_look_around = false;
+  return options;
+}
+
+// A 5 m x 4 m walled area, all known free inside, its east wall missing: unknown from
+// x = 5.1 on, so the only frontier runs along x = 5.05.
+TestGrid openToTheEast() {
+  TestGrid cells(70, 40);
+  cells.occupied(0, 0, 50, 39).free(1, 1, 50, 38);
+  return cells;
+}
+
+// Distance from a point to the rectangle [x0, x1] x [y0, y1].
+double distanceToRect(double x, double y, double x0, double y0, double x1, double y1) {
+  return std::hypot(std::max({x0 - x, 0.0, x - x1}), std::max({y0 - y, 0.0, y - y1}));
+}
+
+TEST(FrontierExplorerTest, DrivesTowardsAFrontierAhead) {
+  const TestGrid cells = openToTheEast();
+  FrontierExplorer explorer(testOptions());
+  KinematicRobot robot({1.0, 2.0, 0.0});
+  explorer.updateMap(cells.grid(), mrpt::poses::CPose2D(robot.pose_));
+  ASSERT_TRUE(explorer.controlStep(robot));
+  EXPECT_GT(robot.speed_, 0.0);
+  // Roughly east: within 12 degrees (the turn rate is heading_gain times the heading error).
+  EXPECT_LT(std::abs(robot.turn_rate_), testOptions().heading_gain * 0.2);
+  EXPECT_EQ(explorer.status().phase, ExplorerPhase::kDriving);
+  EXPECT_GT(explorer.status().target_x, 4.0);  // a goal cell near the frontier
+}
+
+TEST(FrontierExplorerTest, TurnsOnTheSpotToLookBeforeDrivingTowardsAFrontierBehind) {
+  const TestGrid cells = openToTheEast();
+  FrontierExplorer explorer(testOptions());
+  KinematicRobot robot({1.0, 2.0, M_PI});
+  explorer.updateMap(cells.grid(), mrpt::poses::CPose2D(robot.pose_));
+  double first_forward_heading_error = -1.0;
+  for (int i = 0; i < 200 && first_forward_heading_error < 0.0; ++i) {
+    ASSERT_TRUE(explorer.controlStep(robot));
+    if (robot.speed_ > 0.0) first_forward_heading_error = std::abs(robot.pose_.phi);
+    robot.step(0.05);
+  }
+  // Never drives before the path is inside the 90 degree view (turn_in_place_deg), and the
+  // path is straight east.
+  ASSERT_GE(first_forward_heading_error, 0.0) << "never drove";
+  EXPECT_LT(first_forward_heading_error, testOptions().turn_in_place_rad);
+}
+
+TEST(FrontierExplorerTest, TakesANewRouteWhenAnObstacleAppearsOnThePath) {
+  TestGrid cells = openToTheEast();
+  FrontierExplorer explorer(testOptions());
+  KinematicRobot robot({1.0, 2.0, 0.0});
+  explorer.updateMap(cells.grid(), mrpt::poses::CPose2D(robot.pose_));
+  ASSERT_TRUE(explorer.controlStep(robot));
+  ASSERT_LT(std::abs(robot.turn_rate_), testOptions().heading_gain * 0.2);
+  // A wall across the way east (x 2.0 .. 2.2, y up to 2.5), open at its north end (y 2.5 .. 3.9).
+  cells.occupied(20, 1, 21, 24);
+  explorer.updateMap(cells.grid(), mrpt::poses::CPose2D(robot.pose_));
+  ASSERT_TRUE(explorer.controlStep(robot));
+  EXPECT_GT(robot.turn_rate_, testOptions().heading_gain * 0.3) << "turns left, towards the opening";
+  // Following the new plan gets it past the wall without touching it.
+  double closest = 1e9;
+  for (int i = 0; i < 600 && robot.pose_.x < 2.5; ++i) {
+    if (!explorer.controlStep(robot)) break;
+    robot.step(0.05);
+    closest = std::min(closest, distanceToRect(robot.pose_.x, robot.pose_.y, 2.0, 0.0, 2.2, 2.5));
+  }
+  EXPECT_GT(robot.pose_.x, 2.5);
+  EXPECT_GE(closest, testOptions().robot_radius_m);
+}
+
+TEST(FrontierExplorerTest, LooksAroundOnceThenStopsWhenNoFrontierIsLeftAndSaysWhy) {
+  TestGrid cells(40, 40);
+  cells.occupied(0, 0, 39, 39).free(1, 1, 38, 38);
+  FrontierExplorer explorer(testOptions());
+  KinematicRobot robot({2.0, 2.0, 0.0});
+  explorer.updateMap(cells.grid(), mrpt::poses::CPose2D(robot.pose_));
+  int steps = 0;
+  while (explorer.controlStep(robot) && steps < 1000) {
+    robot.step(0.05);
+    ++steps;
+  }
+  EXPECT_TRUE(explorer.finished());
+  EXPECT_EQ(explorer.stopReason().rfind("no frontier left", 0), 0u) << explorer.stopReason();
+  EXPECT_GE(robot.turned_, 2.0 * M_PI - 0.1);  // a full look around first
+  EXPECT_LE(robot.turned_, 2.0 * M_PI + 0.5);
+  EXPECT_GE(robot.stops_, 1);
+  EXPECT_EQ(robot.speed_, 0.0);
+}
+
+TEST(FrontierExplorerTest, StopsWhenTheOnlyFrontierIsBeyondADoorTooNarrowForTheBody) {
+  TestGrid cells(70, 40);
+  // Walled area, east wall at x = 5.0 with a 0.5 m door (the inflated body needs 0.8 m), a walled
+  // passage beyond it to x = 6.1, then unknown: the frontier is 1.5 m past the last cell where the
+  // body fits, out of the goals' reach.
+  cells.occupied(0, 0, 60, 39).free(1, 1, 49, 38).free(50, 18, 60, 22).unknown(61, 18, 61, 22);
+  FrontierExplorer explorer(testOptions());
+  KinematicRobot robot({2.0, 2.0, 0.0});
+  explorer.updateMap(cells.grid(), mrpt::poses::CPose2D(robot.pose_));
+  int steps = 0;
+  while (explorer.controlStep(robot) && steps < 1000) {
+    robot.step(0.05);
+    ++steps;
+  }
+  EXPECT_EQ(explorer.stopReason().rfind("no reachable frontier left", 0), 0u)
+      << explorer.stopReason() << " " << phaseName(explorer.status().phase) << " " << robot.pose_.asString();
+}
+
+}  // namespace
+}  // namespace stereonav
