@@ -11,5 +11,6 @@ int runDisparityCommand(const std::vector<std::string>& arguments);
 int runSimulateCommand(const std::vector<std::string>& arguments);
 int runMapCommand(const std::vector<std::string>& arguments);
 int runExploreCommand(const std::vector<std::string>& arguments);
+int runScoreCommand(const std::vector<std::string>& arguments);
 
 }  // namespace stereonav::app

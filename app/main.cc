@@ -23,6 +23,8 @@ const Command kCommands[] = {
      stereonav::app::runMapCommand},
     {"explore", "explore a simulated world closed-loop: stereo mapping plus frontier exploration",
      stereonav::app::runExploreCommand},
+    {"score", "score an occupancy map (ROS map_server YAML) against a ground-truth map",
+     stereonav::app::runScoreCommand},
 };
 
 void printUsage(std::ostream& out) {
