@@ -51,7 +51,11 @@ ColumnProjector::ColumnProjector(const CameraRig& rig, const ProjectionOptions& 
       const double k = rig.baseline_m * (rotation(2, 0) * (x - camera.cx) +
                                          rotation(2, 1) * (y - camera.cy) +
                                          rotation(2, 2) * camera.focal_px);
-      const DisparityInterval interval = bodyVolumeInterval(k, mount_z, options);
+      DisparityInterval interval = bodyVolumeInterval(k, mount_z, options);
+      // Depth Z = f B / d: deeper than max_depth_m means a disparity below f B / max_depth_m.
+      if (options.max_depth_m > 0.0) {
+        interval.lowest = std::max(interval.lowest, camera.focal_px * rig.baseline_m / options.max_depth_m);
+      }
       lowest_(y, x) = static_cast<float>(interval.lowest);
       highest_(y, x) = static_cast<float>(interval.highest);
     }

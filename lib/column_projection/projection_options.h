@@ -10,11 +10,16 @@ namespace stereonav {
 struct ProjectionOptions {
   double floor_clearance_m = 0.05;
   double robot_height_m = 1.0;
+  // Points deeper than this (depth Z along the optical axis, metres) are not readings: a
+  // reading's region of uncertainty grows as Z^2 (paper section 3.2, equation 1), and one far,
+  // deep region marks cells behind the obstacle that no later, closer view can clear.
+  // 0 = no limit.
+  double max_depth_m = 0.0;
   // The virtual laser scan's maxRange: obstacles farther than this are left out of it.
   double scan_max_range_m = 10.0;
 };
 
-// Section [projection]. Keys: floor_clearance_m, robot_height_m, scan_max_range_m.
+// Section [projection]. Keys: floor_clearance_m, robot_height_m, max_depth_m, scan_max_range_m.
 // Throws ConfigError on bad values.
 ProjectionOptions loadProjectionOptions(IniSection& section);
 

@@ -62,6 +62,18 @@ TEST(ColumnProjectorTest, DepthPerColumnIsFocalTimesBaselineOverDisparity) {
   EXPECT_EQ(depths[20], kInvalidDisparity);
 }
 
+TEST(ColumnProjectorTest, PointsDeeperThanMaxDepthAreNoReadings) {
+  const CameraRig rig = testRig(0, 0, 0, 0);
+  ProjectionOptions options = bodyVolume(0.95);
+  options.max_depth_m = 1.5;  // between the box (1.25 m) and the wall (2 m)
+  const DisparityScan scan = ColumnProjector(rig, options).project(levelCorridor());
+  for (int x = 0; x < 201; ++x) {
+    const bool box = x >= 150 && x <= 160;
+    EXPECT_EQ(scan.valid(x), box) << "column " << x;
+  }
+  EXPECT_EQ(scan.column_disparity[155], 8.0f);
+}
+
 TEST(ColumnProjectorTest, ZeroDisparityIsNoObstacle) {
   // A level ray stays at the camera's height at any depth; at d = 0 it is infinitely far.
   const CameraRig rig = testRig(0, 0, 0, 0);

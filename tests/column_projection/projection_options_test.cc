@@ -8,13 +8,23 @@ namespace {
 
 TEST(ProjectionOptionsTest, LoadsEveryKey) {
   mrpt::config::CConfigFileMemory config(
-      "[projection]\nfloor_clearance_m = 0.1\nrobot_height_m = 1.4\nscan_max_range_m = 6\n");
+      "[projection]\nfloor_clearance_m = 0.1\nrobot_height_m = 1.4\nmax_depth_m = 3\nscan_max_range_m = 6\n");
   IniSection section(config, "projection");
   const ProjectionOptions options = loadProjectionOptions(section);
   section.rejectUnknownKeys();
   EXPECT_DOUBLE_EQ(options.floor_clearance_m, 0.1);
   EXPECT_DOUBLE_EQ(options.robot_height_m, 1.4);
+  EXPECT_DOUBLE_EQ(options.max_depth_m, 3.0);
   EXPECT_DOUBLE_EQ(options.scan_max_range_m, 6.0);
+}
+
+TEST(ProjectionOptionsTest, MaxDepthIsOffByDefaultAndNotNegative) {
+  mrpt::config::CConfigFileMemory defaults("[projection]\n");
+  IniSection default_section(defaults, "projection");
+  EXPECT_EQ(loadProjectionOptions(default_section).max_depth_m, 0.0);
+  mrpt::config::CConfigFileMemory config("[projection]\nmax_depth_m = -1\n");
+  IniSection section(config, "projection");
+  EXPECT_THROW(loadProjectionOptions(section), ConfigError);
 }
 
 TEST(ProjectionOptionsTest, RobotMustBeTallerThanTheFloorClearance) {
