@@ -1,0 +1,88 @@
+// End to end: the shipped simulated office run mapped with its true poses by the shipped
+// configuration, scored against the simulator's true map.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <iostream>
+
+#include "evaluation/map_score.h"
+#include "evaluation/ros_map.h"
+#include "mapping/mapping_options.h"
+#include "mapping/rawlog_mapping.h"
+
+namespace stereonav {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kSourceDir = STEREONAV_SOURCE_DIR;
+
+class OfficeRunTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    directory_ = fs::temp_directory_path() /
+                 ("office_run_test_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()));
+    fs::create_directories(directory_);
+  }
+  void TearDown() override { fs::remove_all(directory_); }
+
+  // Maps the run with ini/office_run.ini changed by `adjust`, and scores the map.
+  template <typename Adjust>
+  MapScore mapAndScore(Adjust adjust) {
+    MappingOptions options = loadMappingOptionsFile(kSourceDir + "/ini/office_run.ini");
+    adjust(options);
+    MappingJob job;
+    job.rawlog_path = kSourceDir + "/rawlogs/office_run.rawlog";
+    job.output_prefix = (directory_ / "office").string();
+    job.ground_truth_poses = loadPoseList(kSourceDir + "/rawlogs/office_run.gt.txt");
+    const MappingReport report = mapRawlog(options, job);
+    EXPECT_TRUE(report.complete());
+    EXPECT_EQ(report.frames_mapped, job.ground_truth_poses.size());
+
+    MapScoreOptions score_options;
+    score_options.poses = job.ground_truth_poses;
+    // Obstacles count for recall as far as the configuration maps them.
+    score_options.view_range_m = options.projection.max_depth_m;
+    return scoreMap(loadRosMap(job.output_prefix + ".yaml"),
+                    loadRosMap(kSourceDir + "/rawlogs/office_run.truth.yaml"), score_options);
+  }
+
+  fs::path directory_;
+};
+
+TEST_F(OfficeRunTest, ShippedConfigurationMapsTheOfficeWalls) {
+  const MapScore score = mapAndScore([](MappingOptions&) {});
+  std::cout << score.toText();
+  // Walls within one 10 cm cell. The 160x120 rig's depth step (0.25 m at 2 m) puts part of every
+  // reading's region of uncertainty behind the wall, where no view clears it: precision stays
+  // near 0.8 (the 0.9 aimed for is not reached; see ini/office_run.ini [projection]).
+  EXPECT_GE(score.precision(), 0.75);
+  EXPECT_GE(score.recall(), 0.80);
+  // The false free cells are under the meeting room's chairs: the camera sees under the seat
+  // (paper section 6.1).
+  EXPECT_LE(score.falseFree(), 0.02);
+  EXPECT_GT(score.coverage(), 0.0);
+}
+
+TEST_F(OfficeRunTest, FarReadingsMarkCellsBehindTheWalls) {
+  // Without the depth limit the deep regions of far readings cover the rooms behind the walls.
+  const MapScore limited = mapAndScore([](MappingOptions&) {});
+  const MapScore unlimited = mapAndScore([](MappingOptions& options) { options.projection.max_depth_m = 0.0; });
+  EXPECT_LT(unlimited.precision(), 0.5);
+  EXPECT_GT(unlimited.map_occupied, 4 * limited.map_occupied);
+}
+
+TEST_F(OfficeRunTest, AccuracyPreservationKeepsFarReadingsFromThickeningNearWalls) {
+  // Paper section 4.3, at full range where far readings overlap near ones.
+  const MapScore with = mapAndScore([](MappingOptions& options) { options.projection.max_depth_m = 0.0; });
+  const MapScore without = mapAndScore([](MappingOptions& options) {
+    options.projection.max_depth_m = 0.0;
+    options.grid.stereo.update.accuracy_preservation = false;
+  });
+  EXPECT_GT(with.precision(), without.precision());
+  EXPECT_LT(with.map_occupied, without.map_occupied);
+}
+
+}  // namespace
+}  // namespace stereonav
