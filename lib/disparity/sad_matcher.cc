@@ -39,13 +39,14 @@ struct BilinearTap {
 };
 
 // Where the candidates of a reference pixel are. Candidate j (disparity min + j) of pixel (x, y)
-// is the byte buffer.data + origin + x*x_step + y*y_step + j for cameras one unit baseline along
-// an image axis: their image is flipped and/or transposed once per frame so that increasing
-// disparity runs forward in memory. Other cameras (fractional, longer or diagonal baselines) are
-// interpolated into a per-row table; for them origin/x_step/y_step address pixel (x, y) itself.
+// is the byte buffer.data + origin + x*x_step + y*y_step + j for cameras that move one whole pixel
+// per disparity along an image axis or a diagonal: their image is flipped, transposed or sheared
+// once per frame so that increasing disparity runs forward in memory. Other cameras (fractional
+// or longer baselines) are interpolated into a per-row table; for them origin/x_step/y_step
+// address pixel (x, y) itself.
 struct CandidateSource {
-  cv::Mat1b filtered, transposed, flipped;  // the prefiltered image and its rearrangements
-  cv::Mat1b buffer;  // padded by the frame's margin
+  cv::Mat1b filtered, flipped, padded;  // the prefiltered image, flipped, padded by the margin
+  cv::Mat1b buffer;  // `padded`, or its transpose or shear for vertical and diagonal cameras
   ptrdiff_t origin = 0;
   ptrdiff_t x_step = 0;
   ptrdiff_t y_step = 0;
@@ -74,68 +75,102 @@ struct MatchRegion {
   std::vector<int> cameras;
 };
 
+// A sample offset split as the bilinear taps use it: whole pixels and a fraction in 1/256.
+void splitOffset(double offset, int& whole, int& weight) {
+  whole = static_cast<int>(std::floor(offset));
+  weight = static_cast<int>(std::lround((offset - whole) * 256.0));
+  if (weight == 256) {
+    ++whole;
+    weight = 0;
+  }
+}
+
+// The whole-pixel step per disparity (-1, 0 or 1) that a baseline component `b` samples at every
+// candidate, if interpolation would land exactly on pixels there. Calibrations read from rawlogs
+// carry rounding (by = -0.99999999999999978): such a camera reads exactly the pixels of the unit
+// one, so it takes the direct layout, not the (several times slower) interpolated one.
+bool wholePixelStep(double b, int min_d, int max_d, int& step) {
+  step = static_cast<int>(std::lround(b));
+  if (std::abs(step) > 1) return false;
+  for (int d = min_d; d <= max_d; ++d) {
+    int whole = 0, weight = 0;
+    splitOffset(-b * d, whole, weight);
+    if (weight != 0 || whole != -step * d) return false;
+  }
+  return true;
+}
+
+// Rewrites `image` so that its diagonals x - y = const become rows: sheared(x - y + rows - 1, y) =
+// image(y, x). Entries off the image are never read.
+void shear(const cv::Mat1b& image, cv::Mat1b& sheared) {
+  sheared.create(image.cols + image.rows - 1, image.rows);
+  const ptrdiff_t step = static_cast<ptrdiff_t>(sheared.step);
+  for (int y = 0; y < image.rows; ++y) {
+    const uchar* row = image.ptr<uchar>(y);
+    uchar* column = sheared.data + (image.rows - 1 - y) * step + y;
+    for (int x = 0; x < image.cols; ++x) column[x * step] = row[x];
+  }
+}
+
 // Fills `source` for one secondary camera, reusing its buffers when the frame size is unchanged.
 void prepareCandidateSource(const cv::Mat1b& image, const SecondaryCamera& camera, const PreparedFrame& frame,
                             CandidateSource& source) {
   const int width = image.cols, height = image.rows, margin = frame.margin;
-  const bool horizontal_unit = camera.by == 0.0 && std::abs(camera.bx) == 1.0;
-  const bool vertical_unit = camera.bx == 0.0 && std::abs(camera.by) == 1.0;
-  const bool flip = (horizontal_unit && camera.bx > 0) || (vertical_unit && camera.by > 0);
-  cv::Mat1b arranged = image;
-  if (vertical_unit) {
-    cv::transpose(image, source.transposed);
-    arranged = source.transposed;
-  }
-  if (flip) {
-    cv::flip(arranged, source.flipped, 1);
-    arranged = source.flipped;
-  }
-  cv::copyMakeBorder(arranged, source.buffer, margin, margin, margin, margin, cv::BORDER_REPLICATE);
-  const ptrdiff_t step = static_cast<ptrdiff_t>(source.buffer.step);
-  const ptrdiff_t corner = margin * step + margin;  // pixel (0, 0) of `arranged`
-  const int min_d = frame.min_disparity;
+  const int min_d = frame.min_disparity, max_d = frame.min_disparity + frame.disparities - 1;
+  int sx = 0, sy = 0;
+  const bool direct = wholePixelStep(camera.bx, min_d, max_d, sx) && wholePixelStep(camera.by, min_d, max_d, sy) &&
+                      (sx != 0 || sy != 0);
   source.taps.clear();
-  if (horizontal_unit && camera.bx < 0) {  // (x + d, y)
-    source.origin = corner + min_d;
-    source.x_step = 1;
-    source.y_step = step;
-  } else if (horizontal_unit) {  // (x - d, y) = flipped (width-1-x+d, y)
-    source.origin = corner + width - 1 + min_d;
-    source.x_step = -1;
-    source.y_step = step;
-  } else if (vertical_unit && camera.by < 0) {  // (x, y + d) = transposed row x, column y + d
-    source.origin = corner + min_d;
-    source.x_step = step;
-    source.y_step = 1;
-  } else if (vertical_unit) {  // (x, y - d) = transposed and flipped row x, column height-1-y+d
-    source.origin = corner + height - 1 + min_d;
-    source.x_step = step;
-    source.y_step = -1;
-  } else {
-    source.origin = corner;
-    source.x_step = 1;
-    source.y_step = step;
-    for (int j = 0; j < frame.padded_disparities; ++j) {
-      // Padding lanes repeat the last disparity so that their samples stay inside the image.
-      const int d = min_d + std::min(j, frame.disparities - 1);
-      const auto split = [](double offset, int& whole, int& weight) {
-        whole = static_cast<int>(std::floor(offset));
-        weight = static_cast<int>(std::lround((offset - whole) * 256.0));
-        if (weight == 256) {
-          ++whole;
-          weight = 0;
-        }
-      };
-      BilinearTap tap;
-      int wx = 0, wy = 0;
-      split(-camera.bx * d, tap.dx, wx);
-      split(-camera.by * d, tap.dy, wy);
-      tap.w00 = (256 - wx) * (256 - wy);
-      tap.w01 = wx * (256 - wy);
-      tap.w10 = (256 - wx) * wy;
-      tap.w11 = wx * wy;
-      source.taps.push_back(tap);
+  if (direct) {
+    // Candidate d of pixel (x, y) is (x - sx*d, y - sy*d). Flipping the axes with a positive
+    // step makes it (x' + |sx| d, y' + |sy| d) in the flipped image, x' = width-1-x or x.
+    cv::Mat1b arranged = image;
+    if (sx > 0 || sy > 0) {
+      cv::flip(image, source.flipped, sx > 0 && sy > 0 ? -1 : (sx > 0 ? 1 : 0));
+      arranged = source.flipped;
     }
+    cv::copyMakeBorder(arranged, source.padded, margin, margin, margin, margin, cv::BORDER_REPLICATE);
+    const ptrdiff_t x_sign = sx > 0 ? -1 : 1, y_sign = sy > 0 ? -1 : 1;
+    const ptrdiff_t x_first = sx > 0 ? width - 1 : 0, y_first = sy > 0 ? height - 1 : 0;  // x', y' of pixel (0, 0)
+    if (sy == 0) {  // padded row y'+m, column x'+m+d
+      source.buffer = source.padded;
+      const ptrdiff_t step = static_cast<ptrdiff_t>(source.buffer.step);
+      source.origin = margin * step + margin + x_first + min_d;
+      source.x_step = x_sign;
+      source.y_step = step;
+    } else if (sx == 0) {  // transposed row x+m, column y'+m+d
+      cv::transpose(source.padded, source.buffer);
+      const ptrdiff_t step = static_cast<ptrdiff_t>(source.buffer.step);
+      source.origin = margin * step + margin + y_first + min_d;
+      source.x_step = step;
+      source.y_step = y_sign;
+    } else {  // sheared row x'-y'+rows-1, column y'+m+d
+      shear(source.padded, source.buffer);
+      const ptrdiff_t step = static_cast<ptrdiff_t>(source.buffer.step);
+      source.origin = (x_first - y_first + source.padded.rows - 1) * step + margin + y_first + min_d;
+      source.x_step = x_sign * step;
+      source.y_step = y_sign * (1 - step);
+    }
+    return;
+  }
+  cv::copyMakeBorder(image, source.padded, margin, margin, margin, margin, cv::BORDER_REPLICATE);
+  source.buffer = source.padded;
+  const ptrdiff_t step = static_cast<ptrdiff_t>(source.buffer.step);
+  source.origin = margin * step + margin;
+  source.x_step = 1;
+  source.y_step = step;
+  for (int j = 0; j < frame.padded_disparities; ++j) {
+    // Padding lanes repeat the last disparity so that their samples stay inside the image.
+    const int d = min_d + std::min(j, frame.disparities - 1);
+    BilinearTap tap;
+    int wx = 0, wy = 0;
+    splitOffset(-camera.bx * d, tap.dx, wx);
+    splitOffset(-camera.by * d, tap.dy, wy);
+    tap.w00 = (256 - wx) * (256 - wy);
+    tap.w01 = wx * (256 - wy);
+    tap.w10 = (256 - wx) * wy;
+    tap.w11 = wx * wy;
+    source.taps.push_back(tap);
   }
 }
 

@@ -182,6 +182,10 @@ TEST(SadMatcherTest, ScoresEqualSumOfCameraSads) {
   expectMatchesBruteForce({{-1, 0}, {0, -1}, {1, 0}}, options);
 }
 
+TEST(SadMatcherTest, ScoresEqualPlainSadDiagonalCameras) {
+  expectMatchesBruteForce({{1, 1}, {-1, 1}, {1, -1}, {-1, -1}}, matchOptions());
+}
+
 TEST(SadMatcherTest, WideAccumulatorsWhenSixteenBitsCouldOverflow) {
   StereoOptions options = matchOptions();
   options.window = 15;  // 225 * 255 * 2 cameras > 65535
@@ -232,6 +236,21 @@ TEST(SadMatcherTest, BordersUseTheCamerasThatStillSeeEveryCandidate) {
   EXPECT_GE(shareCorrect(match.disparity, truth, rectMask(kSize, cv::Rect(10, h - max_d, w - max_d - 20, max_d - 3))), 0.99);
   // Bottom-right corner: no camera sees all candidates.
   EXPECT_EQ(testing::shareInvalid(match.disparity, rectMask(kSize, cv::Rect(w - max_d, h - max_d, max_d, max_d))), 1.0);
+}
+
+TEST(SadMatcherTest, CalibrationRoundingOffAUnitBaselineMatchesTheUnitBaseline) {
+  // A rawlog's camera poses give baselines like (-4.6e-32, -0.99999999999999978) for a top
+  // camera: every candidate still lands exactly on the pixel of the unit baseline.
+  SyntheticScene scene(kSize, 4.0, 19);
+  scene.addPlane(kPlane, 10.0);
+  const StereoFrame exact = renderFrame(scene, {{-1, 0}, {0, -1}});
+  StereoFrame rounded = exact;
+  rounded.secondaries[1].camera = {-4.5554407119658594e-32, -0.99999999999999978};
+  const SadMatch a = SadMatcher(matchOptions()).match(exact);
+  const SadMatch b = SadMatcher(matchOptions()).match(rounded);
+  const cv::Rect interior(0, 0, kSize.width - 1, kSize.height);  // (x = w-1 is a border case for b)
+  EXPECT_EQ(cv::norm(a.best_score(interior), b.best_score(interior), cv::NORM_INF), 0.0);
+  EXPECT_EQ(cv::norm(a.score_sum(interior), b.score_sum(interior), cv::NORM_INF), 0.0);
 }
 
 TEST(SadMatcherTest, ThreadsGiveTheSameResult) {
