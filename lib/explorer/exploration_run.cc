@@ -76,7 +76,7 @@ std::string jsonString(const std::string& text) {
   return out + "\"";
 }
 
-// The map (white free, black occupied, grey unknown, top row = max y) with the odometry path.
+// The map (white free, black occupied, grey unknown, top row = max y) with the path it was built along.
 void savePathImage(const DisparityTaggedGrid& grid, const std::vector<mrpt::poses::CPose2D>& path,
                    const std::string& file) {
   cv::Mat1b grey(grid.height(), grid.width());
@@ -117,7 +117,18 @@ ExplorationConfig loadExplorationConfig(const std::string& path) {
   config.simulation = loadSection(file, path, "simulation", loadSimulationOptions);
   config.rawlog = loadSection(file, path, "rawlog", loadRawlogWriterOptions);
   config.ground_truth = loadSection(file, path, "ground_truth_map", loadGroundTruthMapOptions);
-  config.explorer = loadSection(file, path, "explorer", loadExplorerOptions);
+  config.explorer = loadSection(file, path, "explorer", [&](IniSection& section) {
+    ExplorerOptions options = loadExplorerOptions(section);
+    const std::string source = section.getString("pose_source", "odometry");
+    if (source == "odometry") {
+      config.pose_source = PoseSource::kOdometry;
+    } else if (source == "ground_truth") {
+      config.pose_source = PoseSource::kGroundTruth;
+    } else {
+      throw ConfigError("[explorer] pose_source: '" + source + "' is neither odometry nor ground_truth");
+    }
+    return options;
+  });
   try {
     config.mapping = loadMappingOptions(file);
   } catch (const ConfigError& error) {
@@ -151,6 +162,7 @@ std::string ExplorationReport::toJson() const {
        << "  \"sim_time_s\": " << sim_time_s << ",\n"
        << "  \"wall_time_s\": " << wall_time_s << ",\n"
        << "  \"collisions\": " << collisions << ",\n"
+       << "  \"blocked_reversals\": " << blocked_reversals << ",\n"
        << "  \"top_speed_mps\": " << top_speed_mps << ",\n"
        << "  \"frames\": " << frames << ",\n"
        << "  \"frame_rate_hz\": " << frame_rate_hz << ",\n"
@@ -179,7 +191,7 @@ ExplorationReport runExploration(const World& world, const ExplorationConfig& co
   StereoMapper mapper(config.mapping, config.rig);
   FrontierExplorer explorer(config.explorer);
   double time = 0.0;
-  CSimulatedRobotInterface robot_interface(robot, time);
+  CSimulatedRobotInterface robot_interface(robot, time, config.pose_source);
   std::optional<SimulationRecorder> recorder;
   if (!job.record_rawlog.empty()) recorder.emplace(job.record_rawlog, config.rawlog, config.rig);
   const OccupancyScale& scale = config.mapping.grid.stereo.update.scale;
@@ -189,7 +201,7 @@ ExplorationReport runExploration(const World& world, const ExplorationConfig& co
   report.start_y = start.y();
   report.start_phi = start.phi();
   report.frame_rate_hz = config.simulation.frame_rate_hz;
-  std::vector<mrpt::poses::CPose2D> odometry_path;
+  std::vector<mrpt::poses::CPose2D> map_path;
   std::ostringstream path_text, truth_text, navlog;
   path_text << std::setprecision(9);
   truth_text << std::setprecision(9);
@@ -214,11 +226,12 @@ ExplorationReport runExploration(const World& world, const ExplorationConfig& co
       rig_frame.secondaries.assign(frame.images.secondaries.begin(), frame.images.secondaries.end());
       rig_frame.rig = config.rig;
       rig_frame.odometry = frame.odometry;
-      mapper.process(rig_frame, frame.odometry);
-      explorer.updateMap(gridOfMap(mapper.map(), scale), frame.odometry);
+      const mrpt::poses::CPose2D map_pose = robot_interface.pose();
+      mapper.process(rig_frame, map_pose);
+      explorer.updateMap(gridOfMap(mapper.map(), scale), map_pose);
       ++report.frames;
-      odometry_path.push_back(frame.odometry);
-      path_text << time << " " << frame.odometry.x() << " " << frame.odometry.y() << " " << frame.odometry.phi() << "\n";
+      map_path.push_back(map_pose);
+      path_text << time << " " << map_pose.x() << " " << map_pose.y() << " " << map_pose.phi() << "\n";
       truth_text << time << " " << frame.true_pose.x() << " " << frame.true_pose.y() << " " << frame.true_pose.phi()
                  << "\n";
       const ExplorerStatus& status = explorer.status();
@@ -247,14 +260,15 @@ ExplorationReport runExploration(const World& world, const ExplorationConfig& co
 
   report.sim_time_s = time;
   report.collisions = robot.collisionCount();
+  report.blocked_reversals = robot_interface.apparentCollisions();
   report.pipeline_ms_per_frame = mapper.times().meanFrameMs();
   const DisparityTaggedGrid grid = gridOfMap(mapper.map(), scale);
   report.coverage = measureCoverage(truth, grid, robot_options.radius_m, start.x(), start.y());
-  saveMapOutputs(mapper.map(), scale, odometry_path, job.output_prefix);
+  saveMapOutputs(mapper.map(), scale, map_path, job.output_prefix);
   writeStringAtomically(job.output_prefix + ".path.txt", path_text.str());
   writeStringAtomically(job.output_prefix + ".truth.txt", truth_text.str());
   writeStringAtomically(job.output_prefix + ".navlog.csv", navlog.str());
-  savePathImage(grid, odometry_path, job.output_prefix + ".path.png");
+  savePathImage(grid, map_path, job.output_prefix + ".path.png");
   report.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   writeStringAtomically(job.output_prefix + ".stats.json", report.toJson());
   return report;

@@ -5,6 +5,7 @@
 
 #include "explorer/exploration_coverage.h"
 #include "explorer/explorer_options.h"
+#include "explorer/simulated_robot_interface.h"
 #include "mapping/mapping_options.h"
 #include "observations/rawlog_writer.h"
 #include "rig/camera_rig.h"
@@ -29,6 +30,8 @@ struct ExplorationConfig {
   GroundTruthMapOptions ground_truth;
   MappingOptions mapping;
   ExplorerOptions explorer;
+  // [explorer] pose_source = odometry | ground_truth (simulated_robot_interface.h).
+  PoseSource pose_source = PoseSource::kOdometry;
 };
 
 // Throws ConfigError naming the file, section and key.
@@ -36,13 +39,15 @@ ExplorationConfig loadExplorationConfig(const std::string& path);
 
 struct ExplorationJob {
   // Writes the map outputs of `stereonav map` (<prefix>.gridmap .png .yaml .pgm .3Dscene), and
-  // <prefix>.path.txt   odometry pose per frame "t x y phi" (the map's frame)
+  // <prefix>.path.txt   the pose the map was built at, per frame "t x y phi" (pose_source)
   // <prefix>.truth.txt  true pose per frame "t x y phi"
   // <prefix>.navlog.csv the navigation trace, one line per frame
   // <prefix>.path.png   the map with the path drawn (red; start green, end blue)
   // <prefix>.stats.json ExplorationReport::toJson()
   std::string output_prefix;
-  std::string record_rawlog;  // "" = do not record; else the rig frames with odometry (+ .gt.txt)
+  // "" = do not record; else the rig frames with odometry (+ .gt.txt); with pose_source =
+  // ground_truth, `stereonav map --use-ground-truth-poses OUT.gt.txt` replays it to the same map.
+  std::string record_rawlog;
   std::optional<double> max_time_s;  // default: [simulation] max_duration_s
   // Seeds the camera noise and odometry errors, and moves the start up to 0.5 m from the world's
   // start pose with any heading (on free floor); without it, the ini's seeds and start pose.
@@ -61,7 +66,8 @@ struct ExplorationReport {
   double frame_rate_hz = 0.0;
   double pipeline_ms_per_frame = 0.0;  // the mapping pipeline alone
   size_t frames = 0;
-  int collisions = 0;
+  int collisions = 0;           // contacts the simulator counted (robot_options' footprint)
+  int blocked_reversals = 0;    // times the explorer found itself blocked and reversed
   std::string stop_reason;
 
   std::string summary() const;

@@ -70,7 +70,7 @@ void FrontierExplorer::updateMap(const DisparityTaggedGrid& grid, const mrpt::po
   if (visited_.empty() || std::hypot(pose.x() - visited_.back().x(), pose.y() - visited_.back().y()) >= kVisitSpacingM) {
     visited_.push_back(pose);
   }
-  grid_ = std::make_unique<NavigationGrid>(grid, visited_, grid_options_);
+  grid_ = std::make_unique<NavigationGrid>(grid, visited_, grid_options_, contacts_);
   replan();
 }
 
@@ -158,6 +158,12 @@ bool FrontierExplorer::controlStep(mrpt::nav::CRobot2NavInterface& robot) {
       blocked_since_ = time_s;
     } else if (time_s - blocked_since_ >= kBlockedS && !finished()) {
       robot.sendApparentCollisionEvent();
+      // Whatever stops the body lies on its front arc: remember it as an obstacle there.
+      const mrpt::poses::CPose2D at(pose);
+      for (const double bearing : {-0.6, -0.3, 0.0, 0.3, 0.6}) {
+        const double reach = options_.robot_radius_m + 0.05;
+        contacts_.emplace_back(at.x() + reach * std::cos(at.phi() + bearing), at.y() + reach * std::sin(at.phi() + bearing));
+      }
       status_.phase = ExplorerPhase::kBackingOff;
       back_off_until_ = time_s + kBackOffS;
       blocked_since_ = -1.0;

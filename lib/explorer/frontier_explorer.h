@@ -88,6 +88,7 @@ class FrontierExplorer {
   CostToGoOptions planner_options_;
   NavigationGridOptions grid_options_;
   std::vector<mrpt::poses::CPose2D> visited_;
+  std::vector<cv::Point2d> contacts_;  // where the body met something unmapped
   std::unique_ptr<NavigationGrid> grid_;
   std::unique_ptr<CostToGoField> field_;
   std::vector<Frontier> frontiers_;

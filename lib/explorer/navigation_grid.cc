@@ -22,7 +22,7 @@ cv::Mat1f distanceToBlocked(const cv::Mat1b& is_clear, double resolution) {
 }  // namespace
 
 NavigationGrid::NavigationGrid(const DisparityTaggedGrid& grid, const std::vector<mrpt::poses::CPose2D>& visited,
-                               const NavigationGridOptions& options)
+                               const NavigationGridOptions& options, const std::vector<cv::Point2d>& contacts)
     : frame_(grid.frame()), cell_class_(grid.height(), grid.width()) {
   const OccupancyScale& scale = grid.scale();
   for (int row = 0; row < grid.height(); ++row) {
@@ -53,6 +53,10 @@ NavigationGrid::NavigationGrid(const DisparityTaggedGrid& grid, const std::vecto
         }
       }
     }
+  }
+  for (const cv::Point2d& contact : contacts) {
+    int col = 0, row = 0;
+    if (cellAt(contact.x, contact.y, col, row)) cell_class_(row, col) = kOccupied;
   }
   if (options.max_hole_cells > 0) fillHoles(options.max_hole_cells);
   clearance_m_ = distanceToBlocked(cell_class_ == kFree, frame_.resolution);

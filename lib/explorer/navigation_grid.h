@@ -37,9 +37,11 @@ class NavigationGrid {
   static constexpr uint8_t kImprecise = 2;
   static constexpr uint8_t kOccupied = 3;
 
-  // `visited` are robot positions (odometry frame, the map's).
+  // `visited` are robot positions (odometry frame, the map's). `contacts` are points where the
+  // robot found itself blocked by something the map does not show (a table top seen edge-on,
+  // paper section 6.1): their cells are occupied, as a bumper would report them.
   NavigationGrid(const DisparityTaggedGrid& grid, const std::vector<mrpt::poses::CPose2D>& visited,
-                 const NavigationGridOptions& options);
+                 const NavigationGridOptions& options, const std::vector<cv::Point2d>& contacts = {});
 
   int width() const { return cell_class_.cols; }
   int height() const { return cell_class_.rows; }

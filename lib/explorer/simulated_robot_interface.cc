@@ -12,15 +12,20 @@ constexpr double kRunEpoch = 946684800.0;  // 2000-01-01T00:00:00Z, as Simulatio
 
 }  // namespace
 
-CSimulatedRobotInterface::CSimulatedRobotInterface(const DifferentialDriveRobot& robot, const double& time_s)
-    : robot_(robot), time_s_(time_s) {}
+CSimulatedRobotInterface::CSimulatedRobotInterface(const DifferentialDriveRobot& robot, const double& time_s,
+                                                   PoseSource pose_source)
+    : robot_(robot), time_s_(time_s), pose_source_(pose_source) {}
+
+mrpt::poses::CPose2D CSimulatedRobotInterface::pose() const {
+  return pose_source_ == PoseSource::kOdometry ? robot_.odometry() : robot_.pose();
+}
 
 bool CSimulatedRobotInterface::getCurrentPoseAndSpeeds(mrpt::math::TPose2D& pose,
                                                        mrpt::math::TTwist2D& velocity_global,
                                                        mrpt::system::TTimeStamp& timestamp,
                                                        mrpt::math::TPose2D& odometry, std::string& frame_id) {
   odometry = robot_.odometry().asTPose();
-  pose = odometry;
+  pose = this->pose().asTPose();
   velocity_global.vx = robot_.speed() * std::cos(pose.phi);
   velocity_global.vy = robot_.speed() * std::sin(pose.phi);
   velocity_global.omega = robot_.turnRate();

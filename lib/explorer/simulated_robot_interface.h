@@ -6,15 +6,23 @@
 
 namespace stereonav {
 
+// Where the robot's pose comes from: its dead reckoning, as the paper maps and navigates
+// (section 5; it names localization an open problem, section 6.1), or a perfect localization
+// module (the simulator's true pose).
+enum class PoseSource { kOdometry, kGroundTruth };
+
 // The simulated robot behind MRPT's robot-to-navigator interface, so that the explorer drives it
-// exactly as it would drive a real base's driver. Pose and odometry are both the robot's dead
-// reckoning (the paper maps and navigates with it, section 5; the true pose stays with the
-// simulator). Time is the simulation's clock. Velocity commands are held until the simulation
-// steps the robot (commandedSpeed / commandedTurnRate).
+// exactly as it would drive a real base's driver. As MRPT defines it, the pose is the
+// localization's (here per PoseSource) and the odometry is the raw dead reckoning. Time is the
+// simulation's clock. Velocity commands are held until the simulation steps the robot
+// (commandedSpeed / commandedTurnRate).
 class CSimulatedRobotInterface : public mrpt::nav::CRobot2NavInterface {
  public:
   // `time_s` is the simulation clock, read on every call.
-  CSimulatedRobotInterface(const DifferentialDriveRobot& robot, const double& time_s);
+  CSimulatedRobotInterface(const DifferentialDriveRobot& robot, const double& time_s, PoseSource pose_source);
+
+  // The pose the navigator gets (and the map must be built at).
+  mrpt::poses::CPose2D pose() const;
 
   bool getCurrentPoseAndSpeeds(mrpt::math::TPose2D& pose, mrpt::math::TTwist2D& velocity_global,
                                mrpt::system::TTimeStamp& timestamp, mrpt::math::TPose2D& odometry,
@@ -26,17 +34,22 @@ class CSimulatedRobotInterface : public mrpt::nav::CRobot2NavInterface {
   mrpt::kinematics::CVehicleVelCmd::Ptr getStopCmd() override;
   // The explorer's obstacles come from the stereo map, not from a sensor of the base: false.
   bool senseObstacles(mrpt::maps::CSimplePointsMap& obstacles, mrpt::system::TTimeStamp& timestamp) override;
+  // The navigator found the robot not moving though told to (it reverses out); counted.
+  void sendApparentCollisionEvent() override { ++apparent_collisions_; }
   double getNavigationTime() override { return time_s_; }
   void resetNavigationTimer() override {}
 
   double commandedSpeed() const { return speed_; }
   double commandedTurnRate() const { return turn_rate_; }
+  int apparentCollisions() const { return apparent_collisions_; }
 
  private:
   const DifferentialDriveRobot& robot_;
   const double& time_s_;
+  PoseSource pose_source_;
   double speed_ = 0.0;
   double turn_rate_ = 0.0;
+  int apparent_collisions_ = 0;
 };
 
 }  // namespace stereonav
