@@ -68,11 +68,11 @@ bool DisparityScanInserter::explainedByBetterEvidence(const CellSpan* begin, con
     if (!clipToGrid(*span, grid, col_begin, col_end)) continue;
     const uint8_t* occupancy = grid.occupancyRow(span->row);
     const float* tags = grid.tagRow(span->row);
-    int explaining = 0;  // counted rather than returned at the first: this loop vectorises
+    // Spans are a few cells long (most regions are narrow and oblique): a plain loop that stops
+    // at the first explaining cell beats a vectorised one.
     for (int col = col_begin; col < col_end; ++col) {
-      explaining += (occupancy[col] > unknown) & (tags[col] > disparity);
+      if (tags[col] > disparity && occupancy[col] > unknown) return true;
     }
-    if (explaining > 0) return true;
   }
   return false;
 }
