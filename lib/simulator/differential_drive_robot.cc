@@ -26,25 +26,15 @@ constexpr int kContactBisections = 20;
 
 DifferentialDriveOptions loadDifferentialDriveOptions(IniSection& section) {
   DifferentialDriveOptions options;
-  const auto positive = [&](const std::string& key, double value) {
-    const double read = section.getDouble(key, value);
-    if (!(read > 0.0)) throw ConfigError("[" + section.name() + "] " + key + ": must be positive");
-    return read;
-  };
-  const auto non_negative = [&](const std::string& key, double value) {
-    const double read = section.getDouble(key, value);
-    if (!(read >= 0.0)) throw ConfigError("[" + section.name() + "] " + key + ": must be >= 0");
-    return read;
-  };
-  options.max_speed_mps = positive("max_speed_mps", options.max_speed_mps);
-  options.max_turn_rate = positive("max_turn_rate", options.max_turn_rate);
-  options.max_acceleration = positive("max_acceleration", options.max_acceleration);
-  options.max_turn_acceleration = positive("max_turn_acceleration", options.max_turn_acceleration);
-  options.radius_m = positive("radius_m", options.radius_m);
-  options.height_m = positive("height_m", options.height_m);
-  options.odometry_distance_noise = non_negative("odometry_distance_noise", options.odometry_distance_noise);
-  options.odometry_turn_noise = non_negative("odometry_turn_noise", options.odometry_turn_noise);
-  options.odometry_drift_rad_per_m = non_negative("odometry_drift_rad_per_m", options.odometry_drift_rad_per_m);
+  options.max_speed_mps = section.getPositive("max_speed_mps", options.max_speed_mps);
+  options.max_turn_rate = section.getPositive("max_turn_rate", options.max_turn_rate);
+  options.max_acceleration = section.getPositive("max_acceleration", options.max_acceleration);
+  options.max_turn_acceleration = section.getPositive("max_turn_acceleration", options.max_turn_acceleration);
+  options.radius_m = section.getPositive("radius_m", options.radius_m);
+  options.height_m = section.getPositive("height_m", options.height_m);
+  options.odometry_distance_noise = section.getNonNegative("odometry_distance_noise", options.odometry_distance_noise);
+  options.odometry_turn_noise = section.getNonNegative("odometry_turn_noise", options.odometry_turn_noise);
+  options.odometry_drift_rad_per_m = section.getNonNegative("odometry_drift_rad_per_m", options.odometry_drift_rad_per_m);
   options.seed = section.getInt("seed", options.seed);
   return options;
 }

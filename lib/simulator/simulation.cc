@@ -42,17 +42,12 @@ Velocity steerTowards(const mrpt::poses::CPose2D& pose, const std::vector<Point2
 
 SimulationOptions loadSimulationOptions(IniSection& section) {
   SimulationOptions options;
-  const auto positive = [&](const std::string& key, double value) {
-    const double read = section.getDouble(key, value);
-    if (!(read > 0.0)) throw ConfigError("[" + section.name() + "] " + key + ": must be positive");
-    return read;
-  };
-  options.frame_rate_hz = positive("frame_rate_hz", options.frame_rate_hz);
-  options.control_rate_hz = positive("control_rate_hz", options.control_rate_hz);
-  options.cruise_speed_mps = positive("cruise_speed_mps", options.cruise_speed_mps);
-  options.waypoint_tolerance_m = positive("waypoint_tolerance_m", options.waypoint_tolerance_m);
-  options.heading_gain = positive("heading_gain", options.heading_gain);
-  options.max_duration_s = positive("max_duration_s", options.max_duration_s);
+  options.frame_rate_hz = section.getPositive("frame_rate_hz", options.frame_rate_hz);
+  options.control_rate_hz = section.getPositive("control_rate_hz", options.control_rate_hz);
+  options.cruise_speed_mps = section.getPositive("cruise_speed_mps", options.cruise_speed_mps);
+  options.waypoint_tolerance_m = section.getPositive("waypoint_tolerance_m", options.waypoint_tolerance_m);
+  options.heading_gain = section.getPositive("heading_gain", options.heading_gain);
+  options.max_duration_s = section.getPositive("max_duration_s", options.max_duration_s);
   if (options.control_rate_hz < options.frame_rate_hz) {
     throw ConfigError("[" + section.name() + "] control_rate_hz: must be at least frame_rate_hz");
   }
