@@ -26,20 +26,6 @@ constexpr const char* kUsage =
     "world's true occupancy as a ROS map. C.ini sections: [rig], [sim_sensor], [sim_robot],\n"
     "[simulation], [rawlog], [ground_truth_map].\n";
 
-// Loads one section of the run configuration with `load`, rejecting keys it does not know;
-// errors name the file.
-template <typename Load>
-auto loadSection(const mrpt::config::CConfigFile& config, const std::string& file, const char* name, Load load) {
-  try {
-    IniSection section(config, name);
-    auto options = load(section);
-    section.rejectUnknownKeys();
-    return options;
-  } catch (const ConfigError& error) {
-    throw ConfigError(file + ": " + error.what());
-  }
-}
-
 }  // namespace
 
 int runSimulateCommand(const std::vector<std::string>& arguments) {
@@ -58,12 +44,12 @@ int runSimulateCommand(const std::vector<std::string>& arguments) {
   const World world = loadWorld(world_path);
   if (!std::ifstream(config_path)) throw ConfigError(config_path + ": cannot open the configuration file");
   const mrpt::config::CConfigFile config(config_path);
-  const CameraRig rig = loadSection(config, config_path, "rig", loadCameraRig);
-  const SensorOptions sensor = loadSection(config, config_path, "sim_sensor", loadSensorOptions);
-  const DifferentialDriveOptions robot = loadSection(config, config_path, "sim_robot", loadDifferentialDriveOptions);
-  const SimulationOptions options = loadSection(config, config_path, "simulation", loadSimulationOptions);
-  const RawlogWriterOptions rawlog = loadSection(config, config_path, "rawlog", loadRawlogWriterOptions);
-  GroundTruthMapOptions map_options = loadSection(config, config_path, "ground_truth_map", loadGroundTruthMapOptions);
+  const CameraRig rig = loadIniSection(config, "rig", loadCameraRig, config_path);
+  const SensorOptions sensor = loadIniSection(config, "sim_sensor", loadSensorOptions, config_path);
+  const DifferentialDriveOptions robot = loadIniSection(config, "sim_robot", loadDifferentialDriveOptions, config_path);
+  const SimulationOptions options = loadIniSection(config, "simulation", loadSimulationOptions, config_path);
+  const RawlogWriterOptions rawlog = loadIniSection(config, "rawlog", loadRawlogWriterOptions, config_path);
+  GroundTruthMapOptions map_options = loadIniSection(config, "ground_truth_map", loadGroundTruthMapOptions, config_path);
   const MotionPlan plan = loadMotionPlan(plan_path);
 
   SimulationRecorder recorder(rawlog_path, rawlog, rig);

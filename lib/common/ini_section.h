@@ -42,13 +42,20 @@ class IniSection {
 };
 
 // Loads section `name` of `config` with `load` (any `Options load(IniSection&)`), then rejects the
-// keys the loader did not read: the one way a whole options section is read.
+// keys the loader did not read: the one way a whole options section is read. With `file`, errors
+// start with it, so a message names the file as well as the section and key.
 template <typename Load>
-auto loadIniSection(const mrpt::config::CConfigFileBase& config, const std::string& name, Load load) {
-  IniSection section(config, name);
-  auto options = load(section);
-  section.rejectUnknownKeys();
-  return options;
+auto loadIniSection(const mrpt::config::CConfigFileBase& config, const std::string& name, Load load,
+                    const std::string& file = "") {
+  try {
+    IniSection section(config, name);
+    auto options = load(section);
+    section.rejectUnknownKeys();
+    return options;
+  } catch (const ConfigError& error) {
+    if (file.empty()) throw;
+    throw ConfigError(file + ": " + error.what());
+  }
 }
 
 // The known key closest to `key` by edit distance ("" if there are none).

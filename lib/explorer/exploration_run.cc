@@ -29,18 +29,6 @@ constexpr double kRunEpoch = 946684800.0;  // as SimulationRecorder stamps frame
 constexpr double kTimeSlack = 1e-9;
 constexpr double kStartJitterM = 0.5;
 
-template <typename Load>
-auto loadSection(const mrpt::config::CConfigFile& config, const std::string& file, const char* name, Load load) {
-  try {
-    IniSection section(config, name);
-    auto options = load(section);
-    section.rejectUnknownKeys();
-    return options;
-  } catch (const ConfigError& error) {
-    throw ConfigError(file + ": " + error.what());
-  }
-}
-
 // A start pose near the world's for this seed: a body's disc (plus 0.1 m) of true free floor.
 mrpt::poses::CPose2D seededStart(const World& world, const GroundTruthMap& truth, double radius, int seed) {
   std::mt19937 random(static_cast<std::mt19937::result_type>(seed));
@@ -111,13 +99,13 @@ ExplorationConfig loadExplorationConfig(const std::string& path) {
   if (!std::ifstream(path)) throw ConfigError(path + ": cannot open the configuration file");
   const mrpt::config::CConfigFile file(path);
   ExplorationConfig config;
-  config.rig = loadSection(file, path, "rig", loadCameraRig);
-  config.sensor = loadSection(file, path, "sim_sensor", loadSensorOptions);
-  config.robot = loadSection(file, path, "sim_robot", loadDifferentialDriveOptions);
-  config.simulation = loadSection(file, path, "simulation", loadSimulationOptions);
-  config.rawlog = loadSection(file, path, "rawlog", loadRawlogWriterOptions);
-  config.ground_truth = loadSection(file, path, "ground_truth_map", loadGroundTruthMapOptions);
-  config.explorer = loadSection(file, path, "explorer", [&](IniSection& section) {
+  config.rig = loadIniSection(file, "rig", loadCameraRig, path);
+  config.sensor = loadIniSection(file, "sim_sensor", loadSensorOptions, path);
+  config.robot = loadIniSection(file, "sim_robot", loadDifferentialDriveOptions, path);
+  config.simulation = loadIniSection(file, "simulation", loadSimulationOptions, path);
+  config.rawlog = loadIniSection(file, "rawlog", loadRawlogWriterOptions, path);
+  config.ground_truth = loadIniSection(file, "ground_truth_map", loadGroundTruthMapOptions, path);
+  config.explorer = loadIniSection(file, "explorer", [&](IniSection& section) {
     ExplorerOptions options = loadExplorerOptions(section);
     const std::string source = section.getString("pose_source", "odometry");
     if (source == "odometry") {
@@ -128,7 +116,7 @@ ExplorationConfig loadExplorationConfig(const std::string& path) {
       throw ConfigError("[explorer] pose_source: '" + source + "' is neither odometry nor ground_truth");
     }
     return options;
-  });
+  }, path);
   try {
     config.mapping = loadMappingOptions(file);
   } catch (const ConfigError& error) {

@@ -24,11 +24,7 @@ MapperOptions loadMapperOptions(IniSection& section) {
 
 MappingOptions loadMappingOptions(const mrpt::config::CConfigFileBase& config) {
   MappingOptions options;
-  if (config.sectionExists("rig")) {
-    IniSection rig(config, "rig");
-    options.rig = loadCameraRig(rig);
-    rig.rejectUnknownKeys();
-  }
+  if (config.sectionExists("rig")) options.rig = loadIniSection(config, "rig", loadCameraRig);
   {
     IniSection rawlog(config, "rawlog");
     const bool follow_named_pair = rawlog.has("sensor_label");
@@ -37,30 +33,14 @@ MappingOptions loadMappingOptions(const mrpt::config::CConfigFileBase& config) {
     options.calibration_tolerance = loadCalibrationTolerance(rawlog);
     rawlog.rejectUnknownKeys();
   }
-  {
-    IniSection stereo(config, "stereo");
-    options.stereo = loadStereoOptions(stereo);
-    stereo.rejectUnknownKeys();
-  }
-  {
-    IniSection spike_removal(config, "spike_removal");
-    options.spike_removal = loadSpikeRemovalOptions(spike_removal);
-    spike_removal.rejectUnknownKeys();
-  }
-  {
-    IniSection projection(config, "projection");
-    options.projection = loadProjectionOptions(projection);
-    projection.rejectUnknownKeys();
-  }
+  options.stereo = loadIniSection(config, "stereo", loadStereoOptions);
+  options.spike_removal = loadIniSection(config, "spike_removal", loadSpikeRemovalOptions);
+  options.projection = loadIniSection(config, "projection", loadProjectionOptions);
   {
     IniSection grid(config, "grid");
     options.grid = loadGridMapOptions(grid);
   }
-  {
-    IniSection mapper(config, "mapping");
-    options.mapper = loadMapperOptions(mapper);
-    mapper.rejectUnknownKeys();
-  }
+  options.mapper = loadIniSection(config, "mapping", loadMapperOptions);
   return options;
 }
 
