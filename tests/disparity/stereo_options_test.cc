@@ -4,25 +4,17 @@
 #include <mrpt/config/CConfigFileMemory.h>
 
 #include "shipped_config.h"
+#include "support/options_loading.h"
 
 namespace stereonav {
 namespace {
 
 StereoOptions load(const std::string& text) {
-  mrpt::config::CConfigFileMemory config("[stereo]\n" + text);
-  IniSection section(config, "stereo");
-  const StereoOptions options = loadStereoOptions(section);
-  section.rejectUnknownKeys();
-  return options;
+  return test_support::loadSectionText("stereo", text, loadStereoOptions);
 }
 
 std::string errorOf(const std::string& text) {
-  try {
-    load(text);
-  } catch (const ConfigError& error) {
-    return error.what();
-  }
-  return "";
+  return test_support::configErrorOf([&] { load(text); });
 }
 
 TEST(StereoOptionsTest, LoadsEveryKey) {

@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include "support/options_loading.h"
+
 namespace stereonav {
 namespace {
 
@@ -14,12 +16,7 @@ MappingOptions load(const std::string& text) {
 }
 
 std::string errorOf(const std::string& text) {
-  try {
-    load(text);
-  } catch (const ConfigError& error) {
-    return error.what();
-  }
-  return "";
+  return test_support::configErrorOf([&] { load(text); });
 }
 
 TEST(MappingOptionsTest, EachSectionGoesToItsStage) {

@@ -3,24 +3,17 @@
 #include <gtest/gtest.h>
 #include <mrpt/config/CConfigFileMemory.h>
 
+#include "support/options_loading.h"
+
 namespace stereonav {
 namespace {
 
 SpikeRemovalOptions load(const std::string& text) {
-  mrpt::config::CConfigFileMemory config("[spike_removal]\n" + text);
-  IniSection section(config, "spike_removal");
-  const SpikeRemovalOptions options = loadSpikeRemovalOptions(section);
-  section.rejectUnknownKeys();
-  return options;
+  return test_support::loadSectionText("spike_removal", text, loadSpikeRemovalOptions);
 }
 
 std::string errorOf(const std::string& text) {
-  try {
-    load(text);
-  } catch (const ConfigError& error) {
-    return error.what();
-  }
-  return "";
+  return test_support::configErrorOf([&] { load(text); });
 }
 
 TEST(SpikeRemovalOptionsTest, DefaultsToThePapersSegmentation) {
