@@ -4,19 +4,6 @@
 
 namespace stereonav {
 
-namespace {
-
-// The part of a span inside the grid (the grid is grown to cover every region, this only guards
-// against rounding at its border).
-bool clipToGrid(const CellSpan& span, const DisparityTaggedGrid& grid, int& begin, int& end) {
-  if (span.row < 0 || span.row >= grid.height()) return false;
-  begin = std::max(span.col_begin, 0);
-  end = std::min(span.col_end, grid.width());
-  return end > begin;
-}
-
-}  // namespace
-
 DisparityScanInserter::DisparityScanInserter(const SensorModelOptions& sensor_model,
                                              const GridUpdateOptions& update,
                                              double growth_margin_m)
@@ -30,6 +17,8 @@ void DisparityScanInserter::insert(const DisparityScan& scan, const DisparitySca
   if (readings_.empty()) return;
   grid.growToInclude(model_.bounds(readings_, camera, camera_pose), growth_margin_m_);
   model_.rasterize(readings_, camera, camera_pose, grid.frame(), raster_);
+  // The grid was grown to cover every region; clipping only guards against rounding at its border.
+  raster_.spans.clipTo(grid.width(), grid.height());
 
   const CellSpan* spans = raster_.spans.begin();
   clearCells(spans + raster_.clear_begin, raster_.spans.end(), grid);
@@ -50,8 +39,7 @@ void DisparityScanInserter::clearCells(const CellSpan* begin, const CellSpan* en
                                        DisparityTaggedGrid& grid) const {
   const int g_min = update_.scale.g_min, step = update_.update_step;
   for (const CellSpan* span = begin; span != end; ++span) {
-    int col_begin, col_end;
-    if (!clipToGrid(*span, grid, col_begin, col_end)) continue;
+    const int col_begin = span->col_begin, col_end = span->col_end;
     uint8_t* row = grid.occupancyRow(span->row);
     for (int col = col_begin; col < col_end; ++col) {
       row[col] = static_cast<uint8_t>(std::max(row[col] - step, g_min));
@@ -64,8 +52,7 @@ bool DisparityScanInserter::explainedByBetterEvidence(const CellSpan* begin, con
                                                       const DisparityTaggedGrid& grid) const {
   const uint8_t unknown = update_.scale.unknown();
   for (const CellSpan* span = begin; span != end; ++span) {
-    int col_begin, col_end;
-    if (!clipToGrid(*span, grid, col_begin, col_end)) continue;
+    const int col_begin = span->col_begin, col_end = span->col_end;
     const uint8_t* occupancy = grid.occupancyRow(span->row);
     const float* tags = grid.tagRow(span->row);
     // Spans are a few cells long (most regions are narrow and oblique): a plain loop that stops
@@ -81,8 +68,7 @@ void DisparityScanInserter::occupyCells(const CellSpan* begin, const CellSpan* e
                                         float disparity, DisparityTaggedGrid& grid) const {
   const int g_max = update_.scale.g_max, step = update_.update_step;
   for (const CellSpan* span = begin; span != end; ++span) {
-    int col_begin, col_end;
-    if (!clipToGrid(*span, grid, col_begin, col_end)) continue;
+    const int col_begin = span->col_begin, col_end = span->col_end;
     uint8_t* occupancy = grid.occupancyRow(span->row);
     float* tags = grid.tagRow(span->row);
     for (int col = col_begin; col < col_end; ++col) {

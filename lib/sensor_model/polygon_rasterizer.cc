@@ -6,11 +6,17 @@ namespace stereonav {
 
 namespace {
 
-// ceil for values well inside the int range (the polygon lies on the grid); std::ceil is a
-// library call without SSE4.1 and this runs twice per span.
-inline int ceilToInt(double x) {
-  const int truncated = static_cast<int>(x);
-  return truncated + (truncated < x ? 1 : 0);
+// Cell indices are kept within +/- kIndexRange, which covers any grid a robot maps (2^20 cells
+// of 5 cm are 52 km).
+constexpr double kIndexRange = 1 << 20;
+
+// The first cell whose centre (index + 0.5) is at or beyond u: ceil(u - 0.5), computed as
+// kIndexRange - trunc(kIndexRange + 0.5 - u) since truncating a positive value floors it. One
+// conversion, where std::ceil is a library call without SSE4.1 and truncate-and-compare converts
+// back to double, which makes each row wait for the previous one. The offset rounds u to 2^-32
+// cells, far below the rounding in u itself; exact when u - 0.5 is a whole number.
+inline int firstCellFrom(double u) {
+  return static_cast<int>(kIndexRange) - static_cast<int>(kIndexRange + 0.5 - u);
 }
 
 }  // namespace
@@ -41,8 +47,8 @@ void appendCellSpans(const ConvexPolygon& polygon, CellSpanBuffer& spans) {
   };
   int right_from = bottom;
   int right_to = next(bottom, +1), left_to = next(bottom, -1);
-  int row = ceilToInt(polygon.vertices[bottom].v - 0.5);
-  const int row_end = ceilToInt(v_max - 0.5);
+  int row = firstCellFrom(polygon.vertices[bottom].v);
+  const int row_end = firstCellFrom(v_max);
   // Rows come in stretches between vertex heights, over which both sides keep one edge.
   while (row < row_end) {
     const double v_row = row + 0.5;
@@ -56,11 +62,11 @@ void appendCellSpans(const ConvexPolygon& polygon, CellSpanBuffer& spans) {
     const EdgeLine& left = polygon.edges[left_to];
     const double stretch_top =
         std::min(polygon.vertices[right_to].v, polygon.vertices[left_to].v);
-    const int stretch_end = std::min(row_end, std::max(row + 1, ceilToInt(stretch_top - 0.5)));
+    const int stretch_end = std::min(row_end, std::max(row + 1, firstCellFrom(stretch_top)));
     CellSpan* out = spans.room(static_cast<size_t>(stretch_end - row));
     for (double v = row + 0.5; row < stretch_end; ++row, v += 1.0) {  // v stays exact
-      const int col_begin = ceilToInt(std::max(u_min, left.uAt(v)) - 0.5);
-      const int col_end = ceilToInt(std::min(u_max, right.uAt(v)) - 0.5);
+      const int col_begin = firstCellFrom(std::max(u_min, left.uAt(v)));
+      const int col_end = firstCellFrom(std::min(u_max, right.uAt(v)));
       *out = {row, col_begin, col_end};
       out += col_end > col_begin ? 1 : 0;  // branchless: empty rows are overwritten
     }
@@ -83,8 +89,8 @@ void appendPolygonSpans(std::vector<ScanEdge>& edges, CellSpanBuffer& spans) {
   std::vector<const ScanEdge*> active;
   std::vector<Crossing> crossings;
   size_t next_edge = 0;
-  const int row_end = ceilToInt(v_max - 0.5);
-  for (int row = ceilToInt(edges.front().v_low - 0.5); row < row_end; ++row) {
+  const int row_end = firstCellFrom(v_max);
+  for (int row = firstCellFrom(edges.front().v_low); row < row_end; ++row) {
     const double v = row + 0.5;
     while (next_edge < edges.size() && edges[next_edge].v_low <= v) {
       active.push_back(&edges[next_edge++]);
@@ -111,8 +117,8 @@ void appendPolygonSpans(std::vector<ScanEdge>& edges, CellSpanBuffer& spans) {
       winding += crossing.winding;
       if (before <= 0 && winding > 0) entered = crossing.u;
       if (before > 0 && winding <= 0) {
-        const int col_begin = ceilToInt(entered - 0.5);
-        const int col_end = ceilToInt(crossing.u - 0.5);
+        const int col_begin = firstCellFrom(entered);
+        const int col_end = firstCellFrom(crossing.u);
         if (col_end > col_begin) {
           CellSpan* out = spans.room(1);
           *out = {row, col_begin, col_end};

@@ -35,6 +35,18 @@ class CellSpanBuffer {
     size_ = static_cast<size_t>(written_end - storage_.data());
   }
 
+  // Limits every span to the cells of a width x height grid, in place: a span outside becomes
+  // empty (on row 0), so consumers can walk spans without bounds checks of their own.
+  void clipTo(int width, int height) {
+    for (size_t i = 0; i < size_; ++i) {
+      CellSpan& span = storage_[i];
+      const bool row_inside = span.row >= 0 && span.row < height;
+      span.col_begin = row_inside ? std::max(span.col_begin, 0) : 0;
+      span.col_end = row_inside ? std::min(span.col_end, width) : 0;
+      span.row = row_inside ? span.row : 0;
+    }
+  }
+
  private:
   std::vector<CellSpan> storage_;
   size_t size_ = 0;
