@@ -28,8 +28,8 @@ void DisparityScanInserter::insert(const DisparityScan& scan, const DisparitySca
   const mrpt::poses::CPose2D camera_pose = robot_pose + cameraFloorPose(camera.pose_on_robot);
   model_.readings(scan, camera, readings_);
   if (readings_.empty()) return;
-  grid.growToInclude(model_.bounds(readings_, camera, camera_pose), growth_margin_m_);
-  model_.rasterize(readings_, camera, camera_pose, grid.frame(), raster_);
+  grid.growToInclude(model_.bounds(readings_, camera_pose), growth_margin_m_);
+  model_.rasterize(readings_, camera_pose, grid.frame(), raster_);
 
   const CellSpan* spans = raster_.spans.begin();
   clearCells(spans + raster_.clear_begin, raster_.spans.end(), grid);
