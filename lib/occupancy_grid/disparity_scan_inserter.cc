@@ -15,8 +15,8 @@ void DisparityScanInserter::insert(const DisparityScan& scan, const DisparitySca
   const mrpt::poses::CPose2D camera_pose = robot_pose + cameraFloorPose(camera.pose_on_robot);
   model_.readings(scan, camera, readings_);
   if (readings_.empty()) return;
-  grid.growToInclude(model_.bounds(readings_, camera, camera_pose), growth_margin_m_);
-  model_.rasterize(readings_, camera, camera_pose, grid.frame(), raster_);
+  grid.growToInclude(model_.bounds(readings_, camera_pose), growth_margin_m_);
+  model_.rasterize(readings_, camera_pose, grid.frame(), raster_);
   // The grid was grown to cover every region; clipping only guards against rounding at its border.
   raster_.spans.clipTo(grid.width(), grid.height());
 

@@ -8,11 +8,12 @@ IMPLEMENTS_SERIALIZABLE(CObservationDisparityScan, CObservation, stereonav)
 
 namespace stereonav {
 
-uint8_t CObservationDisparityScan::serializeGetVersion() const { return 0; }
+// Version 1 adds the principal point's row cy, which places a tilted head's readings by their row.
+uint8_t CObservationDisparityScan::serializeGetVersion() const { return 1; }
 
 void CObservationDisparityScan::serializeTo(mrpt::serialization::CArchive& out) const {
   out << timestamp << sensorLabel;
-  out << camera.focal_px << camera.cx << camera.baseline_m << camera.pose_on_robot;
+  out << camera.focal_px << camera.cx << camera.cy << camera.baseline_m << camera.pose_on_robot;
   out.WriteAs<uint32_t>(scan.column_disparity.size());
   out.WriteBufferFixEndianness(scan.column_disparity.data(), scan.column_disparity.size());
   out.WriteAs<uint32_t>(scan.column_row.size());
@@ -22,13 +23,18 @@ void CObservationDisparityScan::serializeTo(mrpt::serialization::CArchive& out) 
 void CObservationDisparityScan::serializeFrom(mrpt::serialization::CArchive& in,
                                               uint8_t version) {
   switch (version) {
-    case 0: {
+    case 0:
+    case 1: {
       in >> timestamp >> sensorLabel;
-      in >> camera.focal_px >> camera.cx >> camera.baseline_m >> camera.pose_on_robot;
+      in >> camera.focal_px >> camera.cx;
+      if (version >= 1) in >> camera.cy;
+      in >> camera.baseline_m >> camera.pose_on_robot;
       scan.column_disparity.resize(in.ReadAs<uint32_t>());
       in.ReadBufferFixEndianness(scan.column_disparity.data(), scan.column_disparity.size());
       scan.column_row.resize(in.ReadAs<uint32_t>());
       for (int& row : scan.column_row) row = in.ReadAs<int32_t>();
+      // Without cy the rows cannot be placed: the readings count as seen in the optical axis' row.
+      if (version == 0) scan.column_row.clear();
       break;
     }
     default:
@@ -41,7 +47,7 @@ void CObservationDisparityScan::getDescriptionAsText(std::ostream& o) const {
   int valid = 0;
   for (int column = 0; column < scan.columns(); ++column) valid += scan.valid(column) ? 1 : 0;
   o << "Disparity scan: " << scan.columns() << " columns, " << valid << " with a disparity\n"
-    << "focal_px=" << camera.focal_px << " cx=" << camera.cx
+    << "focal_px=" << camera.focal_px << " cx=" << camera.cx << " cy=" << camera.cy
     << " baseline_m=" << camera.baseline_m << "\n"
     << "Camera optical frame on the robot: " << camera.pose_on_robot << "\n";
 }

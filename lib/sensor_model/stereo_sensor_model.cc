@@ -10,7 +10,7 @@ namespace stereonav {
 namespace {
 
 // The camera's floor frame expressed in some target frame (world or cell units): its centre,
-// the optical axis and the image-right direction, per metre of depth.
+// its heading and the image-right direction, per metre.
 struct FloorAxes {
   CellPoint centre;
   CellPoint forward;
@@ -26,16 +26,20 @@ FloorAxes floorAxes(const mrpt::poses::CPose2D& pose, const GridFrame& frame) {
           {s, -c}};
 }
 
-// The line of sight through image column boundary `edge_x` (a pixel edge, x +/- 0.5): per metre
-// of depth Z it moves (edge_x - cx) / f metres to the image right (paper section 3.2).
-CellPoint lineOfSight(const FloorAxes& axes, const DisparityScanCamera& camera, double edge_x) {
-  const double lateral = (edge_x - camera.cx) / camera.focal_px;
-  return {axes.forward.u + lateral * axes.image_right.u,
-          axes.forward.v + lateral * axes.image_right.v};
+// The slope of the line of sight through image column boundary `edge_x` (a pixel edge, x +/-
+// 0.5) on the floor: per metre of depth Z it moves (edge_x - cx) / f metres to the image right
+// and floor_per_depth metres forward (paper section 3.2).
+double edgeSlope(const DisparityScanCamera& camera, double edge_x, double floor_per_depth) {
+  return (edge_x - camera.cx) / camera.focal_px / floor_per_depth;
 }
 
-CellPoint pointAtDepth(const FloorAxes& axes, const CellPoint& line_of_sight, double depth) {
-  return {axes.centre.u + depth * line_of_sight.u, axes.centre.v + depth * line_of_sight.v};
+// A line of sight on the floor per metre forward.
+CellPoint lineOfSight(const FloorAxes& axes, double slope) {
+  return {axes.forward.u + slope * axes.image_right.u, axes.forward.v + slope * axes.image_right.v};
+}
+
+CellPoint pointAt(const FloorAxes& axes, const CellPoint& line_of_sight, double forward_m) {
+  return {axes.centre.u + forward_m * line_of_sight.u, axes.centre.v + forward_m * line_of_sight.v};
 }
 
 EdgeLine rayLine(const FloorAxes& axes, const CellPoint& line_of_sight) {
@@ -46,22 +50,21 @@ mrpt::math::TPoint2D toPoint(const CellPoint& p) { return {p.u, p.v}; }
 
 const GridFrame kMetricFrame{0.0, 0.0, 1.0};
 
-RegionCorners cornersOf(const ColumnReading& reading, const DisparityScanCamera& camera,
-                        const FloorAxes& axes) {
-  const CellPoint left = lineOfSight(axes, camera, reading.column - 0.5);
-  const CellPoint right = lineOfSight(axes, camera, reading.column + 0.5);
-  return {toPoint(pointAtDepth(axes, left, reading.near_depth_m)),
-          toPoint(pointAtDepth(axes, right, reading.near_depth_m)),
-          toPoint(pointAtDepth(axes, left, reading.far_depth_m)),
-          toPoint(pointAtDepth(axes, right, reading.far_depth_m))};
-}
-
 }  // namespace
+
+HeadTilt HeadTilt::of(const mrpt::poses::CPose3D& optical_pose_on_robot) {
+  const auto rotation = optical_pose_on_robot.getRotationMatrix();
+  // Heights (robot z) of the optical axis (column 2) and of the image-down axis (column 1):
+  // -sin t and -cos t when the head does not roll.
+  const double tilt = std::atan2(-rotation(2, 2), -rotation(2, 1));
+  return {std::cos(tilt), std::sin(tilt)};
+}
 
 DisparityScanCamera DisparityScanCamera::fromRig(const CameraRig& rig) {
   DisparityScanCamera camera;
   camera.focal_px = rig.reference.focal_px;
   camera.cx = rig.reference.cx;
+  camera.cy = rig.reference.cy;
   camera.baseline_m = rig.baseline_m;
   camera.pose_on_robot = rig.pose_on_robot;
   return camera;
@@ -75,40 +78,102 @@ mrpt::poses::CPose2D cameraFloorPose(const mrpt::poses::CPose3D& optical_pose_on
 }
 
 ColumnReading StereoSensorModel::readingForDisparity(int column, float disparity,
-                                                     const DisparityScanCamera& camera) const {
+                                                     const DisparityScanCamera& camera,
+                                                     std::optional<int> row) const {
+  return reading(column, disparity, camera, HeadTilt::of(camera.pose_on_robot),
+                 row ? *row : camera.cy);
+}
+
+ColumnReading StereoSensorModel::reading(int column, float disparity,
+                                         const DisparityScanCamera& camera, const HeadTilt& tilt,
+                                         double row) const {
   ColumnReading reading;
   reading.column = column;
   reading.disparity = disparity;
-  reading.near_depth_m = camera.depthForDisparity(disparity + 0.5);
-  // Equation 1 with d - 0.5 <= 0 puts the obstacle out to infinity.
-  reading.far_depth_m = disparity > 0.5f ? camera.depthForDisparity(disparity - 0.5)
-                                         : options_.max_range_m;
-  reading.far_depth_m = std::max(reading.far_depth_m, reading.near_depth_m);
+  if (isValidDisparity(disparity)) {
+    reading.near_depth_m = camera.depthForDisparity(disparity + 0.5);
+    // Equation 1 with d - 0.5 <= 0 puts the obstacle out to infinity.
+    reading.far_depth_m = disparity > 0.5f ? camera.depthForDisparity(disparity - 0.5)
+                                           : options_.max_range_m;
+    reading.far_depth_m = std::max(reading.far_depth_m, reading.near_depth_m);
+  } else {
+    reading.near_depth_m = reading.far_depth_m = options_.clear_invalid_columns_to_m;
+  }
+  reading.floor_per_depth = tilt.cos_tilt - (row - camera.cy) / camera.focal_px * tilt.sin_tilt;
+  reading.left_slope = edgeSlope(camera, column - 0.5, reading.floor_per_depth);
+  reading.right_slope = edgeSlope(camera, column + 0.5, reading.floor_per_depth);
   return reading;
 }
 
 void StereoSensorModel::readings(const DisparityScan& scan, const DisparityScanCamera& camera,
                                  std::vector<ColumnReading>& readings) const {
   readings.clear();
+  const HeadTilt tilt = HeadTilt::of(camera.pose_on_robot);
+  const bool has_rows = scan.column_row.size() == scan.column_disparity.size();
   for (int column = 0; column < scan.columns(); ++column) {
     const float disparity = scan.column_disparity[column];
     if (isValidDisparity(disparity) && disparity >= 0.0f) {
-      readings.push_back(readingForDisparity(column, disparity, camera));
+      const int row = has_rows ? scan.column_row[column] : -1;
+      readings.push_back(reading(column, disparity, camera, tilt, row >= 0 ? row : camera.cy));
     } else if (options_.clear_invalid_columns_to_m > 0.0) {
-      const double depth = options_.clear_invalid_columns_to_m;
-      readings.push_back({column, kInvalidDisparity, depth, depth});
+      readings.push_back(reading(column, kInvalidDisparity, camera, tilt, camera.cy));
     }
+  }
+  shareEdgeRays(readings);
+}
+
+void StereoSensorModel::shareEdgeRays(std::vector<ColumnReading>& readings) const {
+  // The distinct pixel edges in image order, left to right: a reading's left edge (unless it is
+  // the previous reading's right edge: adjacent columns), then its right edge.
+  std::vector<EdgeRay>& edges = edge_rays_;
+  edges.clear();
+  for (size_t i = 0; i < readings.size(); ++i) {
+    const ColumnReading& reading = readings[i];
+    const EdgeRay left{reading.left_slope, reading.nearDistance(), reading.column};
+    if (i == 0 || readings[i - 1].column + 1 != reading.column) {
+      edges.push_back(left);
+    } else if (left.nearerThan(edges.back())) {
+      edges.back() = left;
+    }
+    edges.push_back({reading.right_slope, reading.nearDistance(), reading.column});
+  }
+  // Slopes must not decrease from left to right. Where two neighbouring edges disagree, the one
+  // from the farther reading takes the nearer one's ray; every such step moves a ray to an edge
+  // whose owner was farther, so the sweeps end.
+  const auto order = [](EdgeRay& left, EdgeRay& right) {
+    if (!(left.slope > right.slope)) return false;
+    if (left.nearerThan(right)) {
+      right = left;
+    } else {
+      left = right;
+    }
+    return true;
+  };
+  for (bool changed = !edges.empty(); changed;) {
+    changed = false;
+    for (size_t k = 1; k < edges.size(); ++k) changed |= order(edges[k - 1], edges[k]);
+    for (size_t k = edges.size() - 1; k > 0; --k) changed |= order(edges[k - 1], edges[k]);
+  }
+  size_t edge = 0;
+  for (size_t i = 0; i < readings.size(); ++i) {
+    if (i > 0 && readings[i - 1].column + 1 != readings[i].column) ++edge;
+    readings[i].left_slope = edges[edge].slope;
+    readings[i].right_slope = edges[++edge].slope;
   }
 }
 
 RegionCorners StereoSensorModel::corners(const ColumnReading& reading,
-                                         const DisparityScanCamera& camera,
                                          const mrpt::poses::CPose2D& camera_floor_pose) const {
-  return cornersOf(reading, camera, floorAxes(camera_floor_pose, kMetricFrame));
+  const FloorAxes axes = floorAxes(camera_floor_pose, kMetricFrame);
+  const CellPoint left = lineOfSight(axes, reading.left_slope);
+  const CellPoint right = lineOfSight(axes, reading.right_slope);
+  return {toPoint(pointAt(axes, left, reading.nearDistance())),
+          toPoint(pointAt(axes, right, reading.nearDistance())),
+          toPoint(pointAt(axes, left, reading.farDistance())),
+          toPoint(pointAt(axes, right, reading.farDistance()))};
 }
 
 WorldBounds StereoSensorModel::bounds(const std::vector<ColumnReading>& readings,
-                                      const DisparityScanCamera& camera,
                                       const mrpt::poses::CPose2D& camera_floor_pose) const {
   WorldBounds bounds{camera_floor_pose.x(), camera_floor_pose.x(), camera_floor_pose.y(),
                      camera_floor_pose.y()};
@@ -122,14 +187,13 @@ WorldBounds StereoSensorModel::bounds(const std::vector<ColumnReading>& readings
   // depth at their near depth), so the far corners bound them all.
   const FloorAxes axes = floorAxes(camera_floor_pose, kMetricFrame);
   for (const ColumnReading& reading : readings) {
-    include(pointAtDepth(axes, lineOfSight(axes, camera, reading.column - 0.5), reading.far_depth_m));
-    include(pointAtDepth(axes, lineOfSight(axes, camera, reading.column + 0.5), reading.far_depth_m));
+    include(pointAt(axes, lineOfSight(axes, reading.left_slope), reading.farDistance()));
+    include(pointAt(axes, lineOfSight(axes, reading.right_slope), reading.farDistance()));
   }
   return bounds;
 }
 
 void StereoSensorModel::rasterize(const std::vector<ColumnReading>& readings,
-                                  const DisparityScanCamera& camera,
                                   const mrpt::poses::CPose2D& camera_floor_pose,
                                   const GridFrame& frame, ScanRaster& raster) const {
   raster.readings.clear();
@@ -146,17 +210,19 @@ void StereoSensorModel::rasterize(const std::vector<ColumnReading>& readings,
   EdgeLine previous_left_ray{};
   for (auto it = readings.rbegin(); it != readings.rend(); ++it) {
     const ColumnReading& reading = *it;
-    // Neighbouring columns share the line of sight through their common pixel edge: the one
-    // to the right hands its left line over (the same numbers it would compute, since
-    // x + 0.5 == (x + 1) - 0.5 exactly), so both sides of the edge use one EdgeLine.
+    // Neighbouring columns share the line of sight through their common pixel edge (readings()
+    // gave both the same slope): the one to the right hands its left line over, so both sides
+    // of the edge use one EdgeLine.
     const bool adjacent = previous != nullptr && previous->column == reading.column + 1;
-    const CellPoint right = adjacent ? previous_left : lineOfSight(axes, camera, reading.column + 0.5);
+    const CellPoint right = adjacent ? previous_left : lineOfSight(axes, reading.right_slope);
     const EdgeLine right_ray = adjacent ? previous_left_ray : rayLine(axes, right);
-    const CellPoint left = lineOfSight(axes, camera, reading.column - 0.5);
+    const CellPoint left = lineOfSight(axes, reading.left_slope);
     const EdgeLine left_ray = rayLine(axes, left);
-    const CellPoint near_left = pointAtDepth(axes, left, reading.near_depth_m);
-    const CellPoint near_right = pointAtDepth(axes, right, reading.near_depth_m);
-    const EdgeLine near_edge = EdgeLine::through(near_left, near_right);
+    const CellPoint near_left = pointAt(axes, left, reading.nearDistance());
+    const CellPoint near_right = pointAt(axes, right, reading.nearDistance());
+    // A column hidden behind a nearer neighbour's silhouette has an empty wedge (left = right).
+    const bool has_width = reading.right_slope > reading.left_slope;
+    const EdgeLine near_edge = has_width ? EdgeLine::through(near_left, near_right) : EdgeLine{};
 
     if (adjacent) {
       ScanEdge::appendTo(clear, previous_near_left, near_right, right_ray);
@@ -166,7 +232,7 @@ void StereoSensorModel::rasterize(const std::vector<ColumnReading>& readings,
       }
       ScanEdge::appendTo(clear, axes.centre, near_right, right_ray);
     }
-    ScanEdge::appendTo(clear, near_right, near_left, near_edge);
+    if (has_width) ScanEdge::appendTo(clear, near_right, near_left, near_edge);
     previous = &reading;
     previous_near_left = near_left;
     previous_left = left;
@@ -174,8 +240,8 @@ void StereoSensorModel::rasterize(const std::vector<ColumnReading>& readings,
 
     ReadingSpans spans{reading.disparity, static_cast<uint32_t>(raster.spans.size()), 0};
     if (reading.hasOccupiedRegion()) {
-      const CellPoint far_left = pointAtDepth(axes, left, reading.far_depth_m);
-      const CellPoint far_right = pointAtDepth(axes, right, reading.far_depth_m);
+      const CellPoint far_left = pointAt(axes, left, reading.farDistance());
+      const CellPoint far_right = pointAt(axes, right, reading.farDistance());
       ConvexPolygon occupied;  // counter-clockwise: near right, far right, far left, near left
       occupied.size = 4;
       occupied.vertices = {near_right, far_right, far_left, near_left};

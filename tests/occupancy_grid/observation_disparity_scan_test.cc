@@ -26,6 +26,7 @@ TEST(CObservationDisparityScanTest, SerialisesAndComesBackAsAnObservation) {
   original.scan.column_row = {17, -1, 40};
   original.camera.focal_px = 190.0;
   original.camera.cx = 80.25;
+  original.camera.cy = 61.75;
   original.camera.baseline_m = 0.12;
   original.setSensorPose(CameraRig::opticalPoseOnRobot(0.1, -0.05, 0.6, 0.2, 0.1));
 
@@ -42,6 +43,7 @@ TEST(CObservationDisparityScanTest, SerialisesAndComesBackAsAnObservation) {
   EXPECT_EQ(copy->scan.column_row, original.scan.column_row);
   EXPECT_EQ(copy->camera.focal_px, 190.0);
   EXPECT_EQ(copy->camera.cx, 80.25);
+  EXPECT_EQ(copy->camera.cy, 61.75);
   EXPECT_EQ(copy->camera.baseline_m, 0.12);
   mrpt::poses::CPose3D pose;
   copy->getSensorPose(pose);

@@ -47,7 +47,7 @@ RasterCells rasterCells(const StereoSensorModel& model, const DisparityScanCamer
   std::vector<ColumnReading> readings;
   model.readings(scan, cam, readings);
   ScanRaster raster;
-  model.rasterize(readings, cam, robot_pose + cameraFloorPose(cam.pose_on_robot), frame, raster);
+  model.rasterize(readings, robot_pose + cameraFloorPose(cam.pose_on_robot), frame, raster);
   RasterCells cells;
   for (size_t i = raster.clear_begin; i < raster.spans.size(); ++i) {
     const CellSpan& s = raster.spans[i];
@@ -73,7 +73,7 @@ TEST(StereoSensorModelTest, TrapezoidCornersFollowEquationOne) {
   // Column 60 (10 px right of the principal point): X = (x - cx -/+ 0.5) Z / f, i.e. 9.5 Z/100
   // and 10.5 Z/100 to the image right = the robot's right (-y) in the camera floor frame.
   const ColumnReading right = model.readingForDisparity(60, 10.0f, cam);
-  const RegionCorners c = model.corners(right, cam, mrpt::poses::CPose2D());
+  const RegionCorners c = model.corners(right, mrpt::poses::CPose2D());
   const double zn = 10.0 / 10.5, zf = 10.0 / 9.5;
   EXPECT_NEAR(c.near_left.x, zn, 1e-12);
   EXPECT_NEAR(c.near_left.y, -9.5 * zn / 100.0, 1e-12);
@@ -254,7 +254,7 @@ TEST(StereoSensorModelTest, AScanTilesItsWedgesWithoutOverlapsOrGaps) {
   model.readings(scan, cam, readings);
   ScanRaster raster;
   const mrpt::poses::CPose2D camera_pose = robot + cameraFloorPose(cam.pose_on_robot);
-  model.rasterize(readings, cam, camera_pose, fine, raster);
+  model.rasterize(readings, camera_pose, fine, raster);
 
   std::map<std::pair<int, int>, int> hits;
   size_t occupied_cells = 0;
@@ -266,8 +266,8 @@ TEST(StereoSensorModelTest, AScanTilesItsWedgesWithoutOverlapsOrGaps) {
   for (const auto& [cell, count] : hits) EXPECT_EQ(count, 1) << cell.first << "," << cell.second;
 
   // The fan: camera, then the far corners of every column from image right to image left.
-  const RegionCorners rightmost = model.corners(readings.back(), cam, camera_pose);
-  const RegionCorners leftmost = model.corners(readings.front(), cam, camera_pose);
+  const RegionCorners rightmost = model.corners(readings.back(), camera_pose);
+  const RegionCorners leftmost = model.corners(readings.front(), camera_pose);
   const std::vector<mrpt::math::TPoint2D> fan{
       {camera_pose.x(), camera_pose.y()}, rightmost.far_right, leftmost.far_left};
   // All far edges lie on the same depth line, so the union of the regions is exactly the fan.
@@ -282,6 +282,180 @@ TEST(StereoSensorModelTest, AScanTilesItsWedgesWithoutOverlapsOrGaps) {
     }
   }
   EXPECT_EQ(inside_fan, hits.size());
+  EXPECT_GT(occupied_cells, 1000u);
+}
+
+// A head tilted down by 30 degrees (cos 0.8660254, sin 0.5): f = 100 px, principal point (50, 40),
+// fB = 10. The pixel at row y and depth Z lies Z (cos t - v sin t) ahead of the camera's floor
+// point, v = (y - cy) / f, and Z (x - cx) / f to the image right.
+DisparityScanCamera tiltedCamera() {
+  DisparityScanCamera cam = camera(100.0, 50.0, 0.1,
+                                   CameraRig::opticalPoseOnRobot(0.0, 0.0, 0.5, 0.0,
+                                                                 mrpt::DEG2RAD(30.0)));
+  cam.cy = 40.0;
+  return cam;
+}
+
+DisparityScan scanWithRows(int columns, const std::vector<std::pair<int, int>>& column_rows,
+                           float disparity) {
+  DisparityScan scan;
+  scan.column_disparity.assign(columns, kInvalidDisparity);
+  scan.column_row.assign(columns, -1);
+  for (const auto& [column, row] : column_rows) {
+    scan.column_disparity[column] = disparity;
+    scan.column_row[column] = row;
+  }
+  return scan;
+}
+
+TEST(StereoSensorModelTest, TiltedHeadPlacesCornersByTheirRow) {
+  // Column 60, row 20 (v = -0.2: floor_per_depth = 0.8660254 + 0.2 * 0.5 = 0.9660254), d = 10:
+  // depths 10/10.5 = 0.952381 and 10/9.5 = 1.052632 m, forward 0.920024 and 1.016869 m; to the
+  // image right (-y) 0.095 and 0.105 times the depth.
+  const DisparityScanCamera cam = tiltedCamera();
+  const StereoSensorModel model(SensorModelOptions{});
+  const ColumnReading reading = model.readingForDisparity(60, 10.0f, cam, 20);
+  EXPECT_NEAR(reading.floor_per_depth, 0.9660254038, 1e-9);
+  const RegionCorners c = model.corners(reading, mrpt::poses::CPose2D());
+  EXPECT_NEAR(c.near_left.x, 0.9200241941, 1e-9);
+  EXPECT_NEAR(c.near_left.y, -0.0904761905, 1e-9);
+  EXPECT_NEAR(c.near_right.x, 0.9200241941, 1e-9);
+  EXPECT_NEAR(c.near_right.y, -0.1, 1e-9);
+  EXPECT_NEAR(c.far_left.x, 1.0168688461, 1e-9);
+  EXPECT_NEAR(c.far_left.y, -0.1, 1e-9);
+  EXPECT_NEAR(c.far_right.x, 1.0168688461, 1e-9);
+  EXPECT_NEAR(c.far_right.y, -0.1105263158, 1e-9);
+
+  // The same corners by MRPT: the optical-frame point Z (u, v, 1) taken to the robot frame.
+  const auto onFloor = [&](double edge_x, double depth) {
+    const mrpt::math::TPoint3D p = cam.pose_on_robot.composePoint(
+        {depth * (edge_x - 50.0) / 100.0, depth * (20.0 - 40.0) / 100.0, depth});
+    return mrpt::math::TPoint2D(p.x - cam.pose_on_robot.x(), p.y - cam.pose_on_robot.y());
+  };
+  EXPECT_NEAR((c.near_left - onFloor(59.5, 10.0 / 10.5)).norm(), 0.0, 1e-9);
+  EXPECT_NEAR((c.far_right - onFloor(60.5, 10.0 / 9.5)).norm(), 0.0, 1e-9);
+
+  // Without a row the reading counts as seen in the optical axis' row: forward = depth cos t.
+  EXPECT_NEAR(model.readingForDisparity(60, 10.0f, cam).floor_per_depth, 0.8660254038, 1e-9);
+}
+
+TEST(StereoSensorModelTest, LevelHeadIgnoresRows) {
+  const DisparityScanCamera cam = camera(100.0, 50.0, 0.1);
+  const StereoSensorModel model(SensorModelOptions{});
+  const RegionCorners without = model.corners(model.readingForDisparity(60, 10.0f, cam),
+                                              mrpt::poses::CPose2D());
+  const RegionCorners with = model.corners(model.readingForDisparity(60, 10.0f, cam, 3),
+                                           mrpt::poses::CPose2D());
+  // (To rounding: MRPT's level optical pose has a tilt of 6e-17 rad.)
+  EXPECT_NEAR((with.near_left - without.near_left).norm(), 0.0, 1e-15);
+  EXPECT_NEAR((with.far_right - without.far_right).norm(), 0.0, 1e-15);
+}
+
+TEST(StereoSensorModelTest, ScanWithoutRowsOnATiltedHeadUsesTheOpticalAxisRow) {
+  const DisparityScanCamera cam = tiltedCamera();
+  const StereoSensorModel model(SensorModelOptions{});
+  DisparityScan scan = scanWithRows(100, {{60, 20}}, 10.0f);
+  scan.column_row.clear();
+  std::vector<ColumnReading> readings;
+  model.readings(scan, cam, readings);
+  ASSERT_EQ(readings.size(), 1u);
+  EXPECT_NEAR(readings[0].nearDistance(), 10.0 / 10.5 * 0.8660254038, 1e-9);
+  EXPECT_NEAR(readings[0].left_slope, 0.095 / 0.8660254038, 1e-9);
+  EXPECT_NEAR(readings[0].right_slope, 0.105 / 0.8660254038, 1e-9);
+}
+
+TEST(StereoSensorModelTest, AdjacentColumnsInDifferentRowsShareTheNearerOnesRay) {
+  // Columns 60 (row 20, floor_per_depth 0.9660254) and 61 (row 60, 0.7660254), both d = 10:
+  // column 61 is nearer (0.952381 * 0.7660254 = 0.729548 m against 0.920024 m), so the edge
+  // x = 60.5 takes its slope 0.105 / 0.7660254 = 0.137071; the outer edges keep their own:
+  // 0.095 / 0.9660254 = 0.098341 and 0.115 / 0.7660254 = 0.150126.
+  const DisparityScanCamera cam = tiltedCamera();
+  const StereoSensorModel model(SensorModelOptions{});
+  std::vector<ColumnReading> readings;
+  model.readings(scanWithRows(100, {{60, 20}, {61, 60}}, 10.0f), cam, readings);
+  ASSERT_EQ(readings.size(), 2u);
+  EXPECT_NEAR(readings[0].left_slope, 0.0983410991, 1e-9);
+  EXPECT_NEAR(readings[0].right_slope, 0.1370711722, 1e-9);
+  EXPECT_EQ(readings[1].left_slope, readings[0].right_slope);
+  EXPECT_NEAR(readings[1].right_slope, 0.1501255695, 1e-9);
+}
+
+TEST(StereoSensorModelTest, AFartherColumnOnTheWrongSideOfANearerRayIsEmpty) {
+  // Column 59 in row 60 is nearer (0.729548 m) than columns 60..62 in row 20 (0.920024 m). Its
+  // right edge x = 59.5 has slope 0.095 / 0.7660254 = 0.124017, right of columns 60 (own wedge
+  // 0.098341..0.108693) and 61 (0.108693..0.119045): they keep the image order only as empty
+  // wedges, and column 62 (own 0.119045..0.129397) starts at 0.124017.
+  const DisparityScanCamera cam = tiltedCamera();
+  const StereoSensorModel model(SensorModelOptions{});
+  const DisparityScan scan = scanWithRows(100, {{59, 60}, {60, 20}, {61, 20}, {62, 20}}, 10.0f);
+  std::vector<ColumnReading> readings;
+  model.readings(scan, cam, readings);
+  ASSERT_EQ(readings.size(), 4u);
+  EXPECT_NEAR(readings[0].left_slope, 0.085 / 0.7660254038, 1e-9);
+  EXPECT_NEAR(readings[0].right_slope, 0.1240167748, 1e-9);
+  for (int i = 1; i <= 2; ++i) {
+    EXPECT_EQ(readings[i].left_slope, readings[0].right_slope) << "column " << 59 + i;
+    EXPECT_EQ(readings[i].right_slope, readings[0].right_slope) << "column " << 59 + i;
+    EXPECT_FALSE(readings[i].hasOccupiedRegion());
+  }
+  EXPECT_EQ(readings[3].left_slope, readings[0].right_slope);
+  EXPECT_NEAR(readings[3].right_slope, 0.125 / 0.9660254038, 1e-9);
+
+  // The empty wedges add no OCC cells.
+  const GridFrame fine{-0.5, -1.0, 0.01};
+  ScanRaster raster;
+  model.rasterize(readings, mrpt::poses::CPose2D(), fine, raster);
+  EXPECT_EQ(raster.readings[1].occupied_begin, raster.readings[1].occupied_end);  // column 61
+  EXPECT_EQ(raster.readings[2].occupied_begin, raster.readings[2].occupied_end);  // column 60
+  EXPECT_GT(raster.readings[0].occupied_end, raster.readings[0].occupied_begin);  // column 62
+}
+
+TEST(StereoSensorModelTest, TiltedScanWithJumpingRowsTilesWithoutOverlaps) {
+  // Rows jump between columns as on real scans; disparities vary too. Every cell of the scan's
+  // regions must come once, each reading's OCC cells must lie in its own trapezoid (checked
+  // against its corners), and the image order of the edges must hold.
+  const DisparityScanCamera cam = tiltedCamera();
+  const StereoSensorModel model(SensorModelOptions{});
+  DisparityScan scan;
+  for (int column = 0; column < 100; ++column) {
+    const bool gap = column % 17 == 5;
+    scan.column_disparity.push_back(gap ? kInvalidDisparity : 4.0f + (column * 7) % 5);
+    scan.column_row.push_back(gap ? -1 : (column * 37) % 80);
+  }
+  std::vector<ColumnReading> readings;
+  model.readings(scan, cam, readings);
+  for (size_t i = 0; i < readings.size(); ++i) {
+    EXPECT_LE(readings[i].left_slope, readings[i].right_slope) << "column " << readings[i].column;
+    if (i > 0) {
+      EXPECT_LE(readings[i - 1].right_slope, readings[i].left_slope);
+    }
+  }
+  const GridFrame fine{-1.0, -3.0, 0.02};
+  const mrpt::poses::CPose2D camera_pose(0.3, -0.2, mrpt::DEG2RAD(20.0));
+  ScanRaster raster;
+  model.rasterize(readings, camera_pose, fine, raster);
+  std::map<std::pair<int, int>, int> hits;
+  for (size_t i = 0; i < raster.spans.size(); ++i) {
+    const CellSpan& s = raster.spans[i];
+    for (int col = s.col_begin; col < s.col_end; ++col) ++hits[{col, s.row}];
+  }
+  for (const auto& [cell, count] : hits) EXPECT_EQ(count, 1) << cell.first << "," << cell.second;
+  size_t occupied_cells = 0;
+  for (size_t r = 0; r < readings.size(); ++r) {
+    // raster.readings runs from image right to image left.
+    const ReadingSpans& spans = raster.readings[readings.size() - 1 - r];
+    const RegionCorners c = model.corners(readings[r], camera_pose);
+    for (uint32_t i = spans.occupied_begin; i < spans.occupied_end; ++i) {
+      const CellSpan& s = raster.spans[i];
+      for (int col = s.col_begin; col < s.col_end; ++col) {
+        ++occupied_cells;
+        const double x = fine.origin_x + (col + 0.5) * fine.resolution;
+        const double y = fine.origin_y + (s.row + 0.5) * fine.resolution;
+        EXPECT_TRUE(insideConvex({c.near_right, c.far_right, c.far_left, c.near_left}, x, y))
+            << "column " << readings[r].column << " cell " << col << "," << s.row;
+      }
+    }
+  }
   EXPECT_GT(occupied_cells, 1000u);
 }
 
