@@ -16,9 +16,10 @@ void DisparityScanInserter::insert(const DisparityScan& scan, const DisparitySca
   model_.readings(scan, camera, readings_);
   if (readings_.empty()) return;
   grid.growToInclude(model_.bounds(readings_, camera_pose), growth_margin_m_);
-  model_.rasterize(readings_, camera_pose, grid.frame(), raster_);
-  // The grid was grown to cover every region; clipping only guards against rounding at its border.
-  raster_.spans.clipTo(grid.width(), grid.height());
+  // The grid was grown to cover every region; the window only guards against rounding at its
+  // border, and it spares the loops below any bounds checks.
+  model_.rasterize(readings_, camera_pose, grid.frame(), raster_,
+                   CellWindow::grid(grid.width(), grid.height()));
 
   const CellSpan* spans = raster_.spans.begin();
   clearCells(spans + raster_.clear_begin, raster_.spans.end(), grid);

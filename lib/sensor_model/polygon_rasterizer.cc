@@ -6,11 +6,10 @@ namespace stereonav {
 
 namespace {
 
-// Cell indices are kept within +/- kIndexRange, which covers any grid a robot maps (2^20 cells
-// of 5 cm are 52 km).
-constexpr double kIndexRange = 1 << 20;
+constexpr double kIndexRange = CellWindow::kIndexRange;
 
-// The first cell whose centre (index + 0.5) is at or beyond u: ceil(u - 0.5), computed as
+// The first cell whose centre (index + 0.5) is at or beyond u, for |u| < kIndexRange (windows
+// keep it there): ceil(u - 0.5), computed as
 // kIndexRange - trunc(kIndexRange + 0.5 - u) since truncating a positive value floors it. One
 // conversion, where std::ceil is a library call without SSE4.1 and truncate-and-compare converts
 // back to double, which makes each row wait for the previous one. The offset rounds u to 2^-32
@@ -21,7 +20,8 @@ inline int firstCellFrom(double u) {
 
 }  // namespace
 
-void appendCellSpans(const ConvexPolygon& polygon, CellSpanBuffer& spans) {
+void appendCellSpans(const ConvexPolygon& polygon, CellSpanBuffer& spans,
+                     const CellWindow& window) {
   int bottom = 0, top = 0;
   double u_min = polygon.vertices[0].u, u_max = u_min;
   for (int i = 1; i < polygon.size; ++i) {
@@ -33,6 +33,8 @@ void appendCellSpans(const ConvexPolygon& polygon, CellSpanBuffer& spans) {
   }
   const double v_max = polygon.vertices[top].v;
   if (!(v_max > polygon.vertices[bottom].v)) return;  // degenerate: a horizontal segment or a point
+  u_min = std::max(u_min, static_cast<double>(window.col_begin));
+  u_max = std::min(u_max, static_cast<double>(window.col_end));
 
   // Counter-clockwise, the interior is on the left of every edge: walking forwards from the
   // lowest vertex climbs the right side (u <= edge), backwards the left side (u >= edge). Rows
@@ -47,8 +49,8 @@ void appendCellSpans(const ConvexPolygon& polygon, CellSpanBuffer& spans) {
   };
   int right_from = bottom;
   int right_to = next(bottom, +1), left_to = next(bottom, -1);
-  int row = firstCellFrom(polygon.vertices[bottom].v);
-  const int row_end = firstCellFrom(v_max);
+  int row = std::max(firstCellFrom(polygon.vertices[bottom].v), window.row_begin);
+  const int row_end = std::min(firstCellFrom(v_max), window.row_end);
   // Rows come in stretches between vertex heights, over which both sides keep one edge.
   while (row < row_end) {
     const double v_row = row + 0.5;
@@ -74,7 +76,8 @@ void appendCellSpans(const ConvexPolygon& polygon, CellSpanBuffer& spans) {
   }
 }
 
-void appendPolygonSpans(std::vector<ScanEdge>& edges, CellSpanBuffer& spans) {
+void appendPolygonSpans(std::vector<ScanEdge>& edges, CellSpanBuffer& spans,
+                        const CellWindow& window) {
   if (edges.empty()) return;
   std::sort(edges.begin(), edges.end(),
             [](const ScanEdge& a, const ScanEdge& b) { return a.v_low < b.v_low; });
@@ -89,8 +92,9 @@ void appendPolygonSpans(std::vector<ScanEdge>& edges, CellSpanBuffer& spans) {
   std::vector<const ScanEdge*> active;
   std::vector<Crossing> crossings;
   size_t next_edge = 0;
-  const int row_end = firstCellFrom(v_max);
-  for (int row = firstCellFrom(edges.front().v_low); row < row_end; ++row) {
+  const int row_end = std::min(firstCellFrom(v_max), window.row_end);
+  for (int row = std::max(firstCellFrom(edges.front().v_low), window.row_begin); row < row_end;
+       ++row) {
     const double v = row + 0.5;
     while (next_edge < edges.size() && edges[next_edge].v_low <= v) {
       active.push_back(&edges[next_edge++]);
@@ -117,8 +121,8 @@ void appendPolygonSpans(std::vector<ScanEdge>& edges, CellSpanBuffer& spans) {
       winding += crossing.winding;
       if (before <= 0 && winding > 0) entered = crossing.u;
       if (before > 0 && winding <= 0) {
-        const int col_begin = firstCellFrom(entered);
-        const int col_end = firstCellFrom(crossing.u);
+        const int col_begin = std::max(firstCellFrom(entered), window.col_begin);
+        const int col_end = std::min(firstCellFrom(crossing.u), window.col_end);
         if (col_end > col_begin) {
           CellSpan* out = spans.room(1);
           *out = {row, col_begin, col_end};

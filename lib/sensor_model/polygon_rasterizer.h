@@ -35,21 +35,23 @@ class CellSpanBuffer {
     size_ = static_cast<size_t>(written_end - storage_.data());
   }
 
-  // Limits every span to the cells of a width x height grid, in place: a span outside becomes
-  // empty (on row 0), so consumers can walk spans without bounds checks of their own.
-  void clipTo(int width, int height) {
-    for (size_t i = 0; i < size_; ++i) {
-      CellSpan& span = storage_[i];
-      const bool row_inside = span.row >= 0 && span.row < height;
-      span.col_begin = row_inside ? std::max(span.col_begin, 0) : 0;
-      span.col_end = row_inside ? std::min(span.col_end, width) : 0;
-      span.row = row_inside ? span.row : 0;
-    }
-  }
-
  private:
   std::vector<CellSpan> storage_;
   size_t size_ = 0;
+};
+
+// The cells a rasteriser may emit: columns [col_begin, col_end) and rows [row_begin, row_end),
+// e.g. a grid's cells, so that its consumers need no bounds checks. Clipping costs nothing per
+// row: it narrows the polygon's column range and its row range up front.
+struct CellWindow {
+  int col_begin;
+  int col_end;
+  int row_begin;
+  int row_end;
+
+  static constexpr int kIndexRange = 1 << 20;  // 2^20 cells of 5 cm are 52 km
+  static constexpr CellWindow all() { return {-kIndexRange, kIndexRange, -kIndexRange, kIndexRange}; }
+  static constexpr CellWindow grid(int width, int height) { return {0, width, 0, height}; }
 };
 
 // A point in continuous cell units: cell (i, j) covers [i, i+1) x [j, j+1), its centre is
@@ -105,14 +107,16 @@ struct ScanEdge {
 // polygon. "Inside" is half-open so that polygons tiling the plane never share a cell: a centre
 // exactly on an edge belongs to the polygon on the edge's right (larger u), or above it (larger
 // v) for a horizontal edge. Rows and columns are unbounded (negative indices are possible); the
-// caller sizes the grid first.
-void appendCellSpans(const ConvexPolygon& polygon, CellSpanBuffer& spans);
+// caller sizes the grid first, or passes its window.
+void appendCellSpans(const ConvexPolygon& polygon, CellSpanBuffer& spans,
+                     const CellWindow& window = CellWindow::all());
 
 // The same for any polygon, or set of polygons that do not overlap, given as counter-clockwise
 // edges (nonzero winding): per row, the edges crossing the row's centre line are sorted and the
 // cells between entering and leaving crossings are taken with the same half-open rule, so that
 // shared EdgeLines split cells with convex neighbours exactly. Cost per row grows with the edges
 // crossing it, not with the polygon's size. Reorders `edges`.
-void appendPolygonSpans(std::vector<ScanEdge>& edges, CellSpanBuffer& spans);
+void appendPolygonSpans(std::vector<ScanEdge>& edges, CellSpanBuffer& spans,
+                        const CellWindow& window = CellWindow::all());
 
 }  // namespace stereonav

@@ -28,9 +28,10 @@ FloorAxes floorAxes(const mrpt::poses::CPose2D& pose, const GridFrame& frame) {
 
 // The slope of the line of sight through image column boundary `edge_x` (a pixel edge, x +/-
 // 0.5) on the floor: per metre of depth Z it moves (edge_x - cx) / f metres to the image right
-// and floor_per_depth metres forward (paper section 3.2).
-double edgeSlope(const DisparityScanCamera& camera, double edge_x, double floor_per_depth) {
-  return (edge_x - camera.cx) / camera.focal_px / floor_per_depth;
+// and floor_per_depth metres forward (paper section 3.2); `metres_per_pixel_edge` is
+// 1 / (f floor_per_depth), one division shared by a reading's two edges.
+double edgeSlope(const DisparityScanCamera& camera, double edge_x, double metres_per_pixel_edge) {
+  return (edge_x - camera.cx) * metres_per_pixel_edge;
 }
 
 // A line of sight on the floor per metre forward.
@@ -100,8 +101,9 @@ ColumnReading StereoSensorModel::reading(int column, float disparity,
     reading.near_depth_m = reading.far_depth_m = options_.clear_invalid_columns_to_m;
   }
   reading.floor_per_depth = tilt.cos_tilt - (row - camera.cy) / camera.focal_px * tilt.sin_tilt;
-  reading.left_slope = edgeSlope(camera, column - 0.5, reading.floor_per_depth);
-  reading.right_slope = edgeSlope(camera, column + 0.5, reading.floor_per_depth);
+  const double metres_per_pixel_edge = 1.0 / (camera.focal_px * reading.floor_per_depth);
+  reading.left_slope = edgeSlope(camera, column - 0.5, metres_per_pixel_edge);
+  reading.right_slope = edgeSlope(camera, column + 0.5, metres_per_pixel_edge);
   return reading;
 }
 
@@ -123,6 +125,20 @@ void StereoSensorModel::readings(const DisparityScan& scan, const DisparityScanC
 }
 
 void StereoSensorModel::shareEdgeRays(std::vector<ColumnReading>& readings) const {
+  // A level head (or readings all from one row) already gives neighbours the same ray, in
+  // image order: nothing to do.
+  bool in_order = true;
+  for (size_t i = 0; i < readings.size() && in_order; ++i) {
+    const ColumnReading& reading = readings[i];
+    in_order = reading.left_slope <= reading.right_slope;
+    if (i > 0 && in_order) {
+      const ColumnReading& previous = readings[i - 1];
+      in_order = previous.column + 1 == reading.column
+                     ? previous.right_slope == reading.left_slope
+                     : previous.right_slope <= reading.left_slope;
+    }
+  }
+  if (in_order) return;
   // The distinct pixel edges in image order, left to right: a reading's left edge (unless it is
   // the previous reading's right edge: adjacent columns), then its right edge.
   std::vector<EdgeRay>& edges = edge_rays_;
@@ -195,7 +211,8 @@ WorldBounds StereoSensorModel::bounds(const std::vector<ColumnReading>& readings
 
 void StereoSensorModel::rasterize(const std::vector<ColumnReading>& readings,
                                   const mrpt::poses::CPose2D& camera_floor_pose,
-                                  const GridFrame& frame, ScanRaster& raster) const {
+                                  const GridFrame& frame, ScanRaster& raster,
+                                  const CellWindow& window) const {
   raster.readings.clear();
   raster.spans.clear();
   raster.clear_edges.clear();
@@ -246,7 +263,7 @@ void StereoSensorModel::rasterize(const std::vector<ColumnReading>& readings,
       occupied.size = 4;
       occupied.vertices = {near_right, far_right, far_left, near_left};
       occupied.edges = {right_ray, EdgeLine::through(far_right, far_left), left_ray, near_edge};
-      appendCellSpans(occupied, raster.spans);
+      appendCellSpans(occupied, raster.spans, window);
     }
     spans.occupied_end = static_cast<uint32_t>(raster.spans.size());
     raster.readings.push_back(spans);
@@ -255,7 +272,7 @@ void StereoSensorModel::rasterize(const std::vector<ColumnReading>& readings,
     ScanEdge::appendTo(clear, previous_near_left, axes.centre, previous_left_ray);
   }
   raster.clear_begin = raster.spans.size();
-  appendPolygonSpans(clear, raster.spans);
+  appendPolygonSpans(clear, raster.spans, window);
 }
 
 }  // namespace stereonav

@@ -157,10 +157,11 @@ class StereoSensorModel {
   WorldBounds bounds(const std::vector<ColumnReading>& readings,
                      const mrpt::poses::CPose2D& camera_floor_pose) const;
 
-  // Rasterises every reading's CLEAR and OCC regions into `raster` (cleared first).
+  // Rasterises every reading's CLEAR and OCC regions into `raster` (cleared first), keeping
+  // only the cells inside `window` (a grid's cells: CellWindow::grid).
   void rasterize(const std::vector<ColumnReading>& readings,
                  const mrpt::poses::CPose2D& camera_floor_pose, const GridFrame& frame,
-                 ScanRaster& raster) const;
+                 ScanRaster& raster, const CellWindow& window = CellWindow::all()) const;
 
  private:
   // An edge between readings while readings() shares them out: its slope and the reading the
