@@ -20,6 +20,7 @@
 #include "mapping/map_outputs.h"
 #include "mapping/stereo_mapper.h"
 #include "observations/rig_frame.h"
+#include "simulator/moving_traffic.h"
 #include "simulator/simulation_recorder.h"
 
 namespace stereonav {
@@ -99,12 +100,7 @@ ExplorationConfig loadExplorationConfig(const std::string& path) {
   if (!std::ifstream(path)) throw ConfigError(path + ": cannot open the configuration file");
   const mrpt::config::CConfigFile file(path);
   ExplorationConfig config;
-  config.rig = loadIniSection(file, "rig", loadCameraRig, path);
-  config.sensor = loadIniSection(file, "sim_sensor", loadSensorOptions, path);
-  config.robot = loadIniSection(file, "sim_robot", loadDifferentialDriveOptions, path);
-  config.simulation = loadIniSection(file, "simulation", loadSimulationOptions, path);
-  config.rawlog = loadIniSection(file, "rawlog", loadRawlogWriterOptions, path);
-  config.ground_truth = loadIniSection(file, "ground_truth_map", loadGroundTruthMapOptions, path);
+  config.simulator = loadSimulatorConfig(file, path);
   config.explorer = loadIniSection(file, "explorer", [&](IniSection& section) {
     ExplorerOptions options = loadExplorerOptions(section);
     const std::string source = section.getString("pose_source", "odometry");
@@ -122,10 +118,9 @@ ExplorationConfig loadExplorationConfig(const std::string& path) {
   } catch (const ConfigError& error) {
     throw ConfigError(path + ": " + error.what());
   }
-  if (config.explorer.robot_radius_m < config.robot.radius_m) {
+  if (config.explorer.robot_radius_m < config.simulator.robot.radius_m) {
     throw ConfigError(path + ": [explorer] robot_radius_m: smaller than the robot's ([sim_robot] radius_m)");
   }
-  config.ground_truth.band_max_z = config.robot.height_m;
   return config;
 }
 
@@ -163,32 +158,33 @@ std::string ExplorationReport::toJson() const {
 
 ExplorationReport runExploration(const World& world, const ExplorationConfig& config, const ExplorationJob& job) {
   const auto wall_start = std::chrono::steady_clock::now();
-  SensorOptions sensor = config.sensor;
-  DifferentialDriveOptions robot_options = config.robot;
-  const GroundTruthMap truth(world, config.ground_truth);
+  SensorOptions sensor = config.simulator.sensor;
+  DifferentialDriveOptions robot_options = config.simulator.robot;
+  const GroundTruthMap truth(world, config.simulator.ground_truth);
   mrpt::poses::CPose2D start(world.start_pose[0], world.start_pose[1], world.start_pose[2]);
   if (job.seed) {
     sensor.seed = *job.seed;
     robot_options.seed = *job.seed;
     start = seededStart(world, truth, robot_options.radius_m, *job.seed);
   }
-  const double max_time = job.max_time_s.value_or(config.simulation.max_duration_s);
+  const double max_time = job.max_time_s.value_or(config.simulator.simulation.max_duration_s);
 
   DifferentialDriveRobot robot(world, robot_options, start);
-  RigRenderer renderer(world, config.rig, sensor);
-  StereoMapper mapper(config.mapping, config.rig);
+  RigRenderer renderer(world, config.simulator.rig, sensor);
+  MovingTraffic traffic(world);
+  StereoMapper mapper(config.mapping, config.simulator.rig);
   FrontierExplorer explorer(config.explorer);
   double time = 0.0;
   CSimulatedRobotInterface robot_interface(robot, time, config.pose_source);
   std::optional<SimulationRecorder> recorder;
-  if (!job.record_rawlog.empty()) recorder.emplace(job.record_rawlog, config.rawlog, config.rig);
+  if (!job.record_rawlog.empty()) recorder.emplace(job.record_rawlog, config.simulator.rawlog, config.simulator.rig);
   const OccupancyScale& scale = config.mapping.grid.stereo.update.scale;
 
   ExplorationReport report;
   report.start_x = start.x();
   report.start_y = start.y();
   report.start_phi = start.phi();
-  report.frame_rate_hz = config.simulation.frame_rate_hz;
+  report.frame_rate_hz = config.simulator.simulation.frame_rate_hz;
   std::vector<mrpt::poses::CPose2D> map_path;
   std::ostringstream path_text, truth_text, navlog;
   path_text << std::setprecision(9);
@@ -197,13 +193,13 @@ ExplorationReport runExploration(const World& world, const ExplorationConfig& co
          << "t,odometry_x,odometry_y,odometry_phi,true_x,true_y,true_phi,speed,turn_rate,phase,frontiers,"
             "target_x,target_y,cost_to_go,speed_command,turn_rate_command,collisions\n";
 
-  const double dt = 1.0 / config.simulation.control_rate_hz;
+  const double dt = 1.0 / config.simulator.simulation.control_rate_hz;
   size_t step = 0;
   while (true) {
-    if (time >= static_cast<double>(report.frames) / config.simulation.frame_rate_hz - kTimeSlack) {
+    if (time >= static_cast<double>(report.frames) / config.simulator.simulation.frame_rate_hz - kTimeSlack) {
       SimulatedFrame frame;
       frame.time_s = time;
-      frame.images = renderer.render(robot.pose(), time);
+      frame.images = renderer.render(robot.pose(), time, traffic.solids());
       frame.true_pose = robot.pose();
       frame.odometry = robot.odometry();
       frame.collisions = robot.collisionCount();
@@ -212,7 +208,7 @@ ExplorationReport runExploration(const World& world, const ExplorationConfig& co
       rig_frame.timestamp = mrpt::Clock::fromDouble(kRunEpoch + time);
       rig_frame.reference = frame.images.reference;
       rig_frame.secondaries.assign(frame.images.secondaries.begin(), frame.images.secondaries.end());
-      rig_frame.rig = config.rig;
+      rig_frame.rig = config.simulator.rig;
       rig_frame.odometry = frame.odometry;
       const mrpt::poses::CPose2D map_pose = robot_interface.pose();
       mapper.process(rig_frame, map_pose);
@@ -239,7 +235,8 @@ ExplorationReport runExploration(const World& world, const ExplorationConfig& co
       break;
     }
     const mrpt::poses::CPose2D before = robot.pose();
-    robot.step(robot_interface.commandedSpeed(), robot_interface.commandedTurnRate(), dt, time);
+    traffic.advance(dt, robot.pose(), robot_options.radius_m);
+    robot.step(robot_interface.commandedSpeed(), robot_interface.commandedTurnRate(), dt, traffic.solids());
     report.distance_m += std::hypot(robot.pose().x() - before.x(), robot.pose().y() - before.y());
     report.top_speed_mps = std::max(report.top_speed_mps, std::abs(robot.speed()));
     time = static_cast<double>(++step) * dt;

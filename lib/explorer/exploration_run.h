@@ -7,12 +7,7 @@
 #include "explorer/explorer_options.h"
 #include "explorer/simulated_robot_interface.h"
 #include "mapping/mapping_options.h"
-#include "observations/rawlog_writer.h"
-#include "rig/camera_rig.h"
-#include "simulator/differential_drive_robot.h"
-#include "simulator/ground_truth_map.h"
-#include "simulator/rig_renderer.h"
-#include "simulator/simulation.h"
+#include "simulator/simulator_config.h"
 #include "simulator/world.h"
 
 namespace stereonav {
@@ -22,12 +17,8 @@ namespace stereonav {
 // as `stereonav simulate` reads them), the mapping pipeline's (as `stereonav map` reads them,
 // so a recorded run replays to the same map) and [explorer]. Unknown keys are rejected.
 struct ExplorationConfig {
-  CameraRig rig;
-  SensorOptions sensor;
-  DifferentialDriveOptions robot;
-  SimulationOptions simulation;  // frame_rate_hz, control_rate_hz, max_duration_s are used
-  RawlogWriterOptions rawlog;
-  GroundTruthMapOptions ground_truth;
+  // Of [simulation], frame_rate_hz, control_rate_hz and max_duration_s are used.
+  SimulatorConfig simulator;
   MappingOptions mapping;
   ExplorerOptions explorer;
   // [explorer] pose_source = odometry | ground_truth (simulated_robot_interface.h).

@@ -67,7 +67,7 @@ TEST(ExplorationRunTest, ExploresASmallRoomWithoutCollisionAndTheRecordedRunRepl
   EXPECT_LT(report.coverage.reachable_free_m2, 10.0);
   EXPECT_GT(report.distance_m, 2.0);
   EXPECT_LE(report.top_speed_mps, config.explorer.max_speed_mps + 1e-9);
-  EXPECT_NEAR(static_cast<double>(report.frames), report.sim_time_s * config.simulation.frame_rate_hz, 1.0);
+  EXPECT_NEAR(static_cast<double>(report.frames), report.sim_time_s * config.simulator.simulation.frame_rate_hz, 1.0);
 
   for (const char* suffix : {".gridmap", ".png", ".yaml", ".pgm", ".3Dscene", ".path.txt", ".truth.txt",
                              ".navlog.csv", ".path.png", ".stats.json"}) {
