@@ -235,7 +235,7 @@ ExplorationReport runExploration(const World& world, const ExplorationConfig& co
       break;
     }
     const mrpt::poses::CPose2D before = robot.pose();
-    traffic.advance(dt, robot.pose(), robot_options.radius_m);
+    traffic.advance(dt, robot.pose(), robot.speed(), robot_options.radius_m);
     robot.step(robot_interface.commandedSpeed(), robot_interface.commandedTurnRate(), dt, traffic.solids());
     report.distance_m += std::hypot(robot.pose().x() - before.x(), robot.pose().y() - before.y());
     report.top_speed_mps = std::max(report.top_speed_mps, std::abs(robot.speed()));

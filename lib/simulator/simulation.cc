@@ -111,7 +111,7 @@ SimulationSummary Simulation::run(const MotionPlan& plan,
     if (time >= options_.max_duration_s - kTimeSlack) break;
 
     const mrpt::poses::CPose2D before = robot.pose();
-    traffic.advance(dt, robot.pose(), robot_.radius_m);
+    traffic.advance(dt, robot.pose(), robot.speed(), robot_.radius_m);
     robot.step(command.speed, command.turn_rate, dt, traffic.solids());
     summary.distance_m += std::hypot(robot.pose().x() - before.x(), robot.pose().y() - before.y());
     time = static_cast<double>(++step) * dt;

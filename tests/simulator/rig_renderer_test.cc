@@ -199,7 +199,7 @@ TEST(RigRenderer, MovingObstaclesAreRenderedWhereTheTrafficHasThem) {
   MovingTraffic traffic(world);
   EXPECT_NEAR(renderer.render(pose, 0.0, traffic.solids()).true_disparity(59, 79), 10.0 / 6.0, 1e-3);
   // At t = 2 s the person stands on the optical axis: its surface is at 3 - 0.25.
-  traffic.advance(2.0, pose, 0.3);
+  traffic.advance(2.0, pose, 0.0, 0.3);
   EXPECT_NEAR(renderer.render(pose, 2.0, traffic.solids()).true_disparity(59, 79), 10.0 / 2.75, 1e-3);
 }
 

@@ -32,7 +32,7 @@ void renderFrames(benchmark::State& state, const char* world_name, int width) {
     // Turn on the spot so every frame sees a different part of the world.
     pose.phi_incr(0.2);
     time += 0.2;
-    traffic.advance(0.2, pose, 0.3);
+    traffic.advance(0.2, pose, 0.0, 0.3);
     benchmark::DoNotOptimize(renderer.render(pose, time, traffic.solids()));
   }
   state.counters["rays/s"] = benchmark::Counter(
