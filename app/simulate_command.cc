@@ -6,12 +6,11 @@
 #include "command_line.h"
 #include "commands.h"
 #include "common/ini_section.h"
-#include "observations/rawlog_writer.h"
-#include "rig/camera_rig.h"
 #include "simulator/ground_truth_map.h"
 #include "simulator/motion_plan.h"
 #include "simulator/simulation.h"
 #include "simulator/simulation_recorder.h"
+#include "simulator/simulator_config.h"
 #include "simulator/world_loader.h"
 
 namespace stereonav::app {
@@ -43,23 +42,14 @@ int runSimulateCommand(const std::vector<std::string>& arguments) {
 
   const World world = loadWorld(world_path);
   if (!std::ifstream(config_path)) throw ConfigError(config_path + ": cannot open the configuration file");
-  const mrpt::config::CConfigFile config(config_path);
-  const CameraRig rig = loadIniSection(config, "rig", loadCameraRig, config_path);
-  const SensorOptions sensor = loadIniSection(config, "sim_sensor", loadSensorOptions, config_path);
-  const DifferentialDriveOptions robot = loadIniSection(config, "sim_robot", loadDifferentialDriveOptions, config_path);
-  const SimulationOptions options = loadIniSection(config, "simulation", loadSimulationOptions, config_path);
-  const RawlogWriterOptions rawlog = loadIniSection(config, "rawlog", loadRawlogWriterOptions, config_path);
-  GroundTruthMapOptions map_options = loadIniSection(config, "ground_truth_map", loadGroundTruthMapOptions, config_path);
+  const SimulatorConfig config = loadSimulatorConfig(mrpt::config::CConfigFile(config_path), config_path);
   const MotionPlan plan = loadMotionPlan(plan_path);
 
-  SimulationRecorder recorder(rawlog_path, rawlog, rig);
-  Simulation simulation(world, rig, sensor, robot, options);
+  SimulationRecorder recorder(rawlog_path, config.rawlog, config.rig);
+  Simulation simulation(world, config.rig, config.sensor, config.robot, config.simulation);
   const SimulationSummary summary = simulation.run(plan, [&](const SimulatedFrame& frame) { recorder.record(frame); });
   recorder.finish();
-  if (map_path) {
-    map_options.band_max_z = robot.height_m;
-    GroundTruthMap(world, map_options).writeRosMap(*map_path);
-  }
+  if (map_path) GroundTruthMap(world, config.ground_truth).writeRosMap(*map_path);
 
   std::cout << "simulated " << summary.frames << " frames over " << summary.duration_s << " s, "
             << summary.distance_m << " m driven, " << summary.collisions << " collision(s); "

@@ -2,6 +2,7 @@
 
 #include <mrpt/config/CConfigFile.h>
 #include <mrpt/core/Clock.h>
+#include <mrpt/kinematics/CVehicleVelCmd_DiffDriven.h>
 #include <mrpt/math/wrap2pi.h>
 
 #include <opencv2/imgcodecs.hpp>
@@ -14,12 +15,16 @@
 #include <random>
 #include <sstream>
 
+#include "column_projection/virtual_range_scan.h"
 #include "common/atomic_file.h"
 #include "explorer/frontier_explorer.h"
+#include "explorer/reactive_nav_log.h"
 #include "explorer/simulated_robot_interface.h"
 #include "mapping/map_outputs.h"
 #include "mapping/stereo_mapper.h"
 #include "observations/rig_frame.h"
+#include "simulator/footprint_overlap.h"
+#include "simulator/moving_traffic.h"
 #include "simulator/simulation_recorder.h"
 
 namespace stereonav {
@@ -28,6 +33,10 @@ namespace {
 constexpr double kRunEpoch = 946684800.0;  // as SimulationRecorder stamps frames
 constexpr double kTimeSlack = 1e-9;
 constexpr double kStartJitterM = 0.5;
+// The robot's sensed obstacles (for the explorer's guard) are the stereo scan's within this range.
+constexpr double kSensedRangeM = 4.0;
+// A moving obstacle this close to the body at a contact is what the robot touched.
+constexpr double kContactSlackM = 0.01;
 
 // A start pose near the world's for this seed: a body's disc (plus 0.1 m) of true free floor.
 mrpt::poses::CPose2D seededStart(const World& world, const GroundTruthMap& truth, double radius, int seed) {
@@ -93,18 +102,45 @@ void savePathImage(const DisparityTaggedGrid& grid, const std::vector<mrpt::pose
   });
 }
 
+// One frame of the run as MRPT's reactive navigators log it (reactive_nav_log.h).
+mrpt::nav::CLogFileRecord navigationRecord(mrpt::system::TTimeStamp stamp, const mrpt::poses::CPose2D& map_pose,
+                                           const DifferentialDriveRobot& robot,
+                                           CSimulatedRobotInterface& robot_interface, const ExplorerStatus& status,
+                                           double robot_radius_m) {
+  mrpt::nav::CLogFileRecord record;
+  record.timestamps["tim_start_iteration"] = stamp;
+  record.robotPoseLocalization = map_pose.asTPose();
+  record.robotPoseOdometry = robot.odometry().asTPose();
+  mrpt::system::TTimeStamp sensed_stamp;
+  robot_interface.senseObstacles(record.WS_Obstacles, sensed_stamp);
+  record.WS_Obstacles_original = record.WS_Obstacles;
+  if (status.has_target) {
+    const mrpt::math::TPoint2D target = map_pose.inverseComposePoint(mrpt::math::TPoint2D(status.target_x, status.target_y));
+    record.WS_targets_relative.emplace_back(target.x, target.y, 0.0);
+  }
+  auto command = std::make_shared<mrpt::kinematics::CVehicleVelCmd_DiffDriven>();
+  command->lin_vel = status.speed_command;
+  command->ang_vel = status.turn_rate_command;
+  record.cmd_vel = command;
+  record.cur_vel_local = mrpt::math::TTwist2D(robot.speed(), 0.0, robot.turnRate());
+  record.cur_vel = record.cur_vel_local;
+  record.cur_vel.rotate(map_pose.phi());
+  record.robotShape_radius = robot_radius_m;
+  record.values["frontiers"] = static_cast<double>(status.frontiers);
+  record.values["cost_to_go_m"] = status.cost_to_go;
+  record.values["free_travel_m"] = status.free_travel_m;
+  record.values["collisions"] = robot.collisionCount();
+  record.additional_debug_msgs["phase"] = phaseName(status.phase);
+  return record;
+}
+
 }  // namespace
 
 ExplorationConfig loadExplorationConfig(const std::string& path) {
   if (!std::ifstream(path)) throw ConfigError(path + ": cannot open the configuration file");
   const mrpt::config::CConfigFile file(path);
   ExplorationConfig config;
-  config.rig = loadIniSection(file, "rig", loadCameraRig, path);
-  config.sensor = loadIniSection(file, "sim_sensor", loadSensorOptions, path);
-  config.robot = loadIniSection(file, "sim_robot", loadDifferentialDriveOptions, path);
-  config.simulation = loadIniSection(file, "simulation", loadSimulationOptions, path);
-  config.rawlog = loadIniSection(file, "rawlog", loadRawlogWriterOptions, path);
-  config.ground_truth = loadIniSection(file, "ground_truth_map", loadGroundTruthMapOptions, path);
+  config.simulator = loadSimulatorConfig(file, path);
   config.explorer = loadIniSection(file, "explorer", [&](IniSection& section) {
     ExplorerOptions options = loadExplorerOptions(section);
     const std::string source = section.getString("pose_source", "odometry");
@@ -122,10 +158,9 @@ ExplorationConfig loadExplorationConfig(const std::string& path) {
   } catch (const ConfigError& error) {
     throw ConfigError(path + ": " + error.what());
   }
-  if (config.explorer.robot_radius_m < config.robot.radius_m) {
+  if (config.explorer.robot_radius_m < config.simulator.robot.radius_m) {
     throw ConfigError(path + ": [explorer] robot_radius_m: smaller than the robot's ([sim_robot] radius_m)");
   }
-  config.ground_truth.band_max_z = config.robot.height_m;
   return config;
 }
 
@@ -150,6 +185,13 @@ std::string ExplorationReport::toJson() const {
        << "  \"sim_time_s\": " << sim_time_s << ",\n"
        << "  \"wall_time_s\": " << wall_time_s << ",\n"
        << "  \"collisions\": " << collisions << ",\n"
+       << "  \"collision_events\": [";
+  for (size_t i = 0; i < collision_events.size(); ++i) {
+    const CollisionEvent& event = collision_events[i];
+    json << (i == 0 ? "\n" : ",\n") << "    {\"t\": " << event.time_s << ", \"x\": " << event.x << ", \"y\": " << event.y
+         << ", \"speed\": " << event.speed_mps << ", \"with\": " << jsonString(event.with) << "}";
+  }
+  json << (collision_events.empty() ? "],\n" : "\n  ],\n")
        << "  \"blocked_reversals\": " << blocked_reversals << ",\n"
        << "  \"top_speed_mps\": " << top_speed_mps << ",\n"
        << "  \"frames\": " << frames << ",\n"
@@ -163,47 +205,49 @@ std::string ExplorationReport::toJson() const {
 
 ExplorationReport runExploration(const World& world, const ExplorationConfig& config, const ExplorationJob& job) {
   const auto wall_start = std::chrono::steady_clock::now();
-  SensorOptions sensor = config.sensor;
-  DifferentialDriveOptions robot_options = config.robot;
-  const GroundTruthMap truth(world, config.ground_truth);
+  SensorOptions sensor = config.simulator.sensor;
+  DifferentialDriveOptions robot_options = config.simulator.robot;
+  const GroundTruthMap truth(world, config.simulator.ground_truth);
   mrpt::poses::CPose2D start(world.start_pose[0], world.start_pose[1], world.start_pose[2]);
   if (job.seed) {
     sensor.seed = *job.seed;
     robot_options.seed = *job.seed;
     start = seededStart(world, truth, robot_options.radius_m, *job.seed);
   }
-  const double max_time = job.max_time_s.value_or(config.simulation.max_duration_s);
+  const double max_time = job.max_time_s.value_or(config.simulator.simulation.max_duration_s);
 
   DifferentialDriveRobot robot(world, robot_options, start);
-  RigRenderer renderer(world, config.rig, sensor);
-  StereoMapper mapper(config.mapping, config.rig);
+  RigRenderer renderer(world, config.simulator.rig, sensor);
+  MovingTraffic traffic(world);
+  StereoMapper mapper(config.mapping, config.simulator.rig);
   FrontierExplorer explorer(config.explorer);
   double time = 0.0;
   CSimulatedRobotInterface robot_interface(robot, time, config.pose_source);
   std::optional<SimulationRecorder> recorder;
-  if (!job.record_rawlog.empty()) recorder.emplace(job.record_rawlog, config.rawlog, config.rig);
+  if (!job.record_rawlog.empty()) recorder.emplace(job.record_rawlog, config.simulator.rawlog, config.simulator.rig);
   const OccupancyScale& scale = config.mapping.grid.stereo.update.scale;
 
   ExplorationReport report;
   report.start_x = start.x();
   report.start_y = start.y();
   report.start_phi = start.phi();
-  report.frame_rate_hz = config.simulation.frame_rate_hz;
+  report.frame_rate_hz = config.simulator.simulation.frame_rate_hz;
   std::vector<mrpt::poses::CPose2D> map_path;
+  ReactiveNavLog reactive_navlog;
   std::ostringstream path_text, truth_text, navlog;
   path_text << std::setprecision(9);
   truth_text << std::setprecision(9);
   navlog << std::setprecision(6)
          << "t,odometry_x,odometry_y,odometry_phi,true_x,true_y,true_phi,speed,turn_rate,phase,frontiers,"
-            "target_x,target_y,cost_to_go,speed_command,turn_rate_command,collisions\n";
+            "target_x,target_y,cost_to_go,speed_command,turn_rate_command,free_travel,collisions\n";
 
-  const double dt = 1.0 / config.simulation.control_rate_hz;
+  const double dt = 1.0 / config.simulator.simulation.control_rate_hz;
   size_t step = 0;
   while (true) {
-    if (time >= static_cast<double>(report.frames) / config.simulation.frame_rate_hz - kTimeSlack) {
+    if (time >= static_cast<double>(report.frames) / config.simulator.simulation.frame_rate_hz - kTimeSlack) {
       SimulatedFrame frame;
       frame.time_s = time;
-      frame.images = renderer.render(robot.pose(), time);
+      frame.images = renderer.render(robot.pose(), time, traffic.solids());
       frame.true_pose = robot.pose();
       frame.odometry = robot.odometry();
       frame.collisions = robot.collisionCount();
@@ -212,10 +256,14 @@ ExplorationReport runExploration(const World& world, const ExplorationConfig& co
       rig_frame.timestamp = mrpt::Clock::fromDouble(kRunEpoch + time);
       rig_frame.reference = frame.images.reference;
       rig_frame.secondaries.assign(frame.images.secondaries.begin(), frame.images.secondaries.end());
-      rig_frame.rig = config.rig;
+      rig_frame.rig = config.simulator.rig;
       rig_frame.odometry = frame.odometry;
       const mrpt::poses::CPose2D map_pose = robot_interface.pose();
       mapper.process(rig_frame, map_pose);
+      mrpt::obs::CObservation2DRangeScan sensed =
+          makeVirtualRangeScan(mapper.disparityScan().scan, config.simulator.rig, kSensedRangeM);
+      sensed.timestamp = rig_frame.timestamp;
+      robot_interface.setSensedObstacles(sensed, map_pose);
       explorer.updateMap(gridOfMap(mapper.map(), scale), map_pose);
       ++report.frames;
       map_path.push_back(map_pose);
@@ -223,12 +271,15 @@ ExplorationReport runExploration(const World& world, const ExplorationConfig& co
       truth_text << time << " " << frame.true_pose.x() << " " << frame.true_pose.y() << " " << frame.true_pose.phi()
                  << "\n";
       const ExplorerStatus& status = explorer.status();
+      reactive_navlog.append(navigationRecord(rig_frame.timestamp, map_pose, robot, robot_interface, status,
+                                              robot_options.radius_m));
       navlog << time << "," << frame.odometry.x() << "," << frame.odometry.y() << "," << frame.odometry.phi() << ","
              << frame.true_pose.x() << "," << frame.true_pose.y() << "," << frame.true_pose.phi() << ","
              << robot.speed() << "," << robot.turnRate() << "," << phaseName(status.phase) << ","
              << status.frontiers << "," << (status.has_target ? status.target_x : NAN) << ","
              << (status.has_target ? status.target_y : NAN) << "," << status.cost_to_go << ","
-             << status.speed_command << "," << status.turn_rate_command << "," << robot.collisionCount() << "\n";
+             << status.speed_command << "," << status.turn_rate_command << "," << status.free_travel_m << ","
+             << robot.collisionCount() << "\n";
     }
     if (time >= max_time - kTimeSlack) {
       report.stop_reason = "time limit of " + std::to_string(static_cast<int>(max_time)) + " s reached";
@@ -239,7 +290,19 @@ ExplorationReport runExploration(const World& world, const ExplorationConfig& co
       break;
     }
     const mrpt::poses::CPose2D before = robot.pose();
-    robot.step(robot_interface.commandedSpeed(), robot_interface.commandedTurnRate(), dt, time);
+    const double speed_before = robot.speed();
+    const int collisions_before = robot.collisionCount();
+    traffic.advance(dt, robot.pose(), robot.speed(), robot_options.radius_m);
+    robot.step(robot_interface.commandedSpeed(), robot_interface.commandedTurnRate(), dt, traffic.solids());
+    if (robot.collisionCount() > collisions_before) {
+      CollisionEvent event{time + dt, robot.pose().x(), robot.pose().y(), speed_before, "static"};
+      for (size_t i = 0; i < traffic.solids().size(); ++i) {
+        if (solidOverlapsDisc(traffic.solids()[i], robot.pose().x(), robot.pose().y(), robot_options.radius_m + kContactSlackM)) {
+          event.with = world.moving_obstacles[i].name;
+        }
+      }
+      report.collision_events.push_back(event);
+    }
     report.distance_m += std::hypot(robot.pose().x() - before.x(), robot.pose().y() - before.y());
     report.top_speed_mps = std::max(report.top_speed_mps, std::abs(robot.speed()));
     time = static_cast<double>(++step) * dt;
@@ -256,6 +319,7 @@ ExplorationReport runExploration(const World& world, const ExplorationConfig& co
   writeStringAtomically(job.output_prefix + ".path.txt", path_text.str());
   writeStringAtomically(job.output_prefix + ".truth.txt", truth_text.str());
   writeStringAtomically(job.output_prefix + ".navlog.csv", navlog.str());
+  reactive_navlog.save(job.output_prefix + ".reactivenavlog");
   savePathImage(grid, map_path, job.output_prefix + ".path.png");
   report.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   writeStringAtomically(job.output_prefix + ".stats.json", report.toJson());

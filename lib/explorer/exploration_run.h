@@ -2,17 +2,13 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "explorer/exploration_coverage.h"
 #include "explorer/explorer_options.h"
 #include "explorer/simulated_robot_interface.h"
 #include "mapping/mapping_options.h"
-#include "observations/rawlog_writer.h"
-#include "rig/camera_rig.h"
-#include "simulator/differential_drive_robot.h"
-#include "simulator/ground_truth_map.h"
-#include "simulator/rig_renderer.h"
-#include "simulator/simulation.h"
+#include "simulator/simulator_config.h"
 #include "simulator/world.h"
 
 namespace stereonav {
@@ -22,12 +18,8 @@ namespace stereonav {
 // as `stereonav simulate` reads them), the mapping pipeline's (as `stereonav map` reads them,
 // so a recorded run replays to the same map) and [explorer]. Unknown keys are rejected.
 struct ExplorationConfig {
-  CameraRig rig;
-  SensorOptions sensor;
-  DifferentialDriveOptions robot;
-  SimulationOptions simulation;  // frame_rate_hz, control_rate_hz, max_duration_s are used
-  RawlogWriterOptions rawlog;
-  GroundTruthMapOptions ground_truth;
+  // Of [simulation], frame_rate_hz, control_rate_hz and max_duration_s are used.
+  SimulatorConfig simulator;
   MappingOptions mapping;
   ExplorerOptions explorer;
   // [explorer] pose_source = odometry | ground_truth (simulated_robot_interface.h).
@@ -42,6 +34,7 @@ struct ExplorationJob {
   // <prefix>.path.txt   the pose the map was built at, per frame "t x y phi" (pose_source)
   // <prefix>.truth.txt  true pose per frame "t x y phi"
   // <prefix>.navlog.csv the navigation trace, one line per frame
+  // <prefix>.reactivenavlog the same for MRPT's navlog-viewer (reactive_nav_log.h)
   // <prefix>.path.png   the map with the path drawn (red; start green, end blue)
   // <prefix>.stats.json ExplorationReport::toJson()
   std::string output_prefix;
@@ -52,6 +45,15 @@ struct ExplorationJob {
   // Seeds the camera noise and odometry errors, and moves the start up to 0.5 m from the world's
   // start pose with any heading (on free floor); without it, the ini's seeds and start pose.
   std::optional<int> seed;
+};
+
+// A contact the simulator counted: when, where (true pose) and with what.
+struct CollisionEvent {
+  double time_s = 0.0;
+  double x = 0.0;
+  double y = 0.0;
+  double speed_mps = 0.0;  // the robot's speed just before
+  std::string with;        // a moving obstacle's section name, or "static"
 };
 
 struct ExplorationReport {
@@ -67,6 +69,7 @@ struct ExplorationReport {
   double pipeline_ms_per_frame = 0.0;  // the mapping pipeline alone
   size_t frames = 0;
   int collisions = 0;           // contacts the simulator counted (robot_options' footprint)
+  std::vector<CollisionEvent> collision_events;
   int blocked_reversals = 0;    // times the explorer found itself blocked and reversed
   std::string stop_reason;
 

@@ -37,6 +37,16 @@ ExplorerOptions loadExplorerOptions(IniSection& section) {
   options.initial_look_around = section.getBool("initial_look_around", options.initial_look_around);
   options.look_around_turn_rate = section.getPositive("look_around_turn_rate", options.look_around_turn_rate);
   options.stuck_timeout_s = section.getPositive("stuck_timeout_s", options.stuck_timeout_s);
+  options.guard_margin_m = section.getNonNegative("guard_margin_m", options.guard_margin_m);
+  options.obstacle_memory_range_m = section.getNonNegative("obstacle_memory_range_m", options.obstacle_memory_range_m);
+  options.obstacle_memory_blind_m = section.getNonNegative("obstacle_memory_blind_m", options.obstacle_memory_blind_m);
+  options.obstacle_memory_min_g = section.getInt("obstacle_memory_min_g", options.obstacle_memory_min_g);
+  if (options.obstacle_memory_min_g < 0 || options.obstacle_memory_min_g > 255) {
+    throw ConfigError("[" + section.name() + "] obstacle_memory_min_g: must be an occupancy value 0..255");
+  }
+  if (options.obstacle_memory_blind_m > options.obstacle_memory_range_m) {
+    throw ConfigError("[" + section.name() + "] obstacle_memory_blind_m: must not exceed obstacle_memory_range_m");
+  }
   return options;
 }
 

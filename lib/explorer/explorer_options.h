@@ -51,12 +51,25 @@ struct ExplorerOptions {
   double look_around_turn_rate = 1.0;  // rad/s
   // No progress towards any goal for this long: the target is dropped as unreachable.
   double stuck_timeout_s = 15.0;
+  // The reactive guard (free_travel.h): the robot brakes so as to stop with this much room
+  // between its body and the obstacles of the newest stereo scans (CRobot2NavInterface::
+  // senseObstacles), whatever the map says.
+  double guard_margin_m = 0.05;
+  // Obstacle points the scans show within obstacle_memory_range_m are obstacles for the planner
+  // and the guard until a later scan sees past them from at least obstacle_memory_blind_m away
+  // (near_obstacle_memory.h): far views see under chair seats and table tops (paper section 6.1).
+  double obstacle_memory_range_m = 2.0;
+  double obstacle_memory_blind_m = 1.0;
+  // Only points where the map's occupancy value is at least this are kept: several readings
+  // agree there (a stereo mismatch seldom repeats).
+  int obstacle_memory_min_g = 200;
 };
 
 // Section [explorer]: robot_radius_m, safety_margin_m, repulsion_distance_m, repulsion_weight,
 // max_hole_cells, precise_min_disparity, goal_distance_m, min_frontier_cells, target_switch_penalty_m, looked_at_range_m, field_of_view_deg,
 // max_speed_mps, max_turn_rate, braking_deceleration, heading_gain, turn_in_place_deg,
-// lookahead_m, initial_look_around, look_around_turn_rate, stuck_timeout_s.
+// lookahead_m, initial_look_around, look_around_turn_rate, stuck_timeout_s, guard_margin_m,
+// obstacle_memory_range_m, obstacle_memory_blind_m, obstacle_memory_min_g.
 ExplorerOptions loadExplorerOptions(IniSection& section);
 
 }  // namespace stereonav

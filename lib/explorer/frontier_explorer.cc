@@ -1,12 +1,15 @@
 #include "explorer/frontier_explorer.h"
 
 #include <mrpt/kinematics/CVehicleVelCmd_DiffDriven.h>
+#include <mrpt/maps/CSimplePointsMap.h>
 #include <mrpt/math/wrap2pi.h>
 
 #include <algorithm>
 #include <cmath>
 #include <deque>
 #include <limits>
+
+#include "explorer/free_travel.h"
 
 namespace stereonav {
 namespace {
@@ -15,9 +18,11 @@ namespace {
 // kMinTurnRate, so it ends.
 constexpr double kFacedRad = 0.2;
 constexpr double kMinTurnRate = 0.25;
-// After facing a frontier the robot holds still this long (two frames at 5 Hz) so that the map
-// sees what is behind it before the frontier is judged.
-constexpr double kLookHoldS = 0.5;
+// After facing a frontier the robot holds still this long so that the map sees what is behind it
+// before the frontier is judged: taking an unknown cell (128) below the free threshold (50) takes
+// four CLEAR updates of K = 20 (paper section 3.4), and not every frame's scan reaches every cell
+// (six frames at 5 Hz).
+constexpr double kLookHoldS = 1.2;
 // Progress: the cost-to-go must drop by this much within stuck_timeout_s.
 constexpr double kProgressM = 0.3;
 // A robot that has moved this far from its last look-around may look around again.
@@ -37,8 +42,30 @@ constexpr double kBackOffSpeed = -0.2;
 // Within this much path of its goal the robot has arrived: it turns to look rather than creep
 // cell by cell along the goal region's edge as the frontier recedes.
 constexpr double kArrivedM = 0.4;
+// The guard looks this far along the arc, more than the braking distance from top speed.
+constexpr double kGuardHorizonM = 2.5;
+// Braking leaves this much of the free travel unused. Nearer than about 0.3 m to the body's
+// front an obstacle is out of the rig's disparity range (f B / max_disparity is 0.52 m from
+// the cameras, which sit 0.2 m behind the front) and often below its view: the robot must not
+// close in on what it can no longer measure. This also covers a scan up to a frame old (a person
+// walks 0.16 m in 0.2 s) and the command taking effect a cycle late.
+constexpr double kStopGapM = 0.3;
+// The guard also keeps the points of the scans of the last kScanMemoryS: what has just left the
+// view (too near, or below it) still counts for a moment.
+constexpr double kScanMemoryS = 1.0;
+// When the guard allows less than this speed the robot is held by what the scan shows: those
+// points (every one within kHoldingDepthM of the first met along the arc) are remembered as
+// obstacles whether the map has them or not, so the next plan goes round them.
+constexpr double kHeldSpeed = 0.05;
+constexpr double kHoldingDepthM = 0.3;
 
 double clampAbs(double value, double limit) { return std::max(-limit, std::min(limit, value)); }
+
+mrpt::math::TPoint2D composed(const mrpt::poses::CPose2D& pose, const mrpt::math::TPoint2D& local) {
+  mrpt::math::TPoint2D global;
+  pose.composePoint(local, global);
+  return global;
+}
 
 }  // namespace
 
@@ -55,13 +82,22 @@ const char* phaseName(ExplorerPhase phase) {
   return "?";
 }
 
-FrontierExplorer::FrontierExplorer(const ExplorerOptions& options) : options_(options) {
+NearObstacleMemoryOptions nearObstacleOptions(const ExplorerOptions& options) {
+  NearObstacleMemoryOptions memory;
+  memory.remember_within_m = options.obstacle_memory_range_m;
+  memory.judge_beyond_m = options.obstacle_memory_blind_m;
+  return memory;
+}
+
+FrontierExplorer::FrontierExplorer(const ExplorerOptions& options)
+    : options_(options), near_obstacles_(nearObstacleOptions(options)) {
   planner_options_.body_radius_m = options.robot_radius_m + options.safety_margin_m;
   planner_options_.repulsion_distance_m = options.repulsion_distance_m;
   planner_options_.repulsion_weight = options.repulsion_weight;
   grid_options_.body_radius_m = options.robot_radius_m;
   grid_options_.max_hole_cells = options.max_hole_cells;
   grid_options_.precise_min_disparity = static_cast<float>(options.precise_min_disparity);
+  grid_options_.sure_obstacle_g = options.obstacle_memory_min_g;
   status_.phase = options.initial_look_around ? ExplorerPhase::kLookingAround : ExplorerPhase::kTurning;
   turned_rad_ = 0.0;
 }
@@ -70,7 +106,10 @@ void FrontierExplorer::updateMap(const DisparityTaggedGrid& grid, const mrpt::po
   if (visited_.empty() || std::hypot(pose.x() - visited_.back().x(), pose.y() - visited_.back().y()) >= kVisitSpacingM) {
     visited_.push_back(pose);
   }
-  grid_ = std::make_unique<NavigationGrid>(grid, visited_, grid_options_, contacts_);
+  std::vector<cv::Point2d> obstacles = contacts_;
+  for (const mrpt::math::TPoint2D& point : near_obstacles_.points()) obstacles.emplace_back(point.x, point.y);
+  grid_ = std::make_unique<NavigationGrid>(grid, visited_, grid_options_, obstacles);
+  awaiting_map_ = false;
   replan();
 }
 
@@ -145,29 +184,36 @@ bool FrontierExplorer::controlStep(mrpt::nav::CRobot2NavInterface& robot) {
     return false;
   }
   const double time_s = robot.getNavigationTime();
+  readSensedObstacles(robot, mrpt::poses::CPose2D(pose), time_s);
   Command command;
   if (status_.phase == ExplorerPhase::kBackingOff && time_s < back_off_until_) {
-    command = {kBackOffSpeed, 0.0};
+    command = guard({kBackOffSpeed, 0.0}, mrpt::poses::CPose2D(pose));
   } else {
     if (status_.phase == ExplorerPhase::kBackingOff) status_.phase = ExplorerPhase::kTurning;
-    command = decide(mrpt::poses::CPose2D(pose), time_s);
+    const Command wanted = decide(mrpt::poses::CPose2D(pose), time_s);
+    command = guard(wanted, mrpt::poses::CPose2D(pose));
     const double speed = std::hypot(velocity.vx, velocity.vy);
-    if (command.speed < kBlockedCommand || speed > kBlockedSpeed) {
+    if (wanted.speed < kBlockedCommand || speed > kBlockedSpeed) {
       blocked_since_ = -1.0;
     } else if (blocked_since_ < 0.0) {
       blocked_since_ = time_s;
     } else if (time_s - blocked_since_ >= kBlockedS && !finished()) {
-      robot.sendApparentCollisionEvent();
-      // Whatever stops the body lies on its front arc: remember it as an obstacle there.
-      const mrpt::poses::CPose2D at(pose);
-      for (const double bearing : {-0.6, -0.3, 0.0, 0.3, 0.6}) {
-        const double reach = options_.robot_radius_m + 0.05;
-        contacts_.emplace_back(at.x() + reach * std::cos(at.phi() + bearing), at.y() + reach * std::sin(at.phi() + bearing));
+      // Held still though it wants to drive: by the guard (what holds it is remembered already),
+      // or by something the body touches that no scan shows.
+      if (command.speed >= kBlockedCommand) {
+        robot.sendApparentCollisionEvent();
+        // Whatever stops the body lies on its front arc: remember it as an obstacle there.
+        const mrpt::poses::CPose2D at(pose);
+        for (const double bearing : {-0.6, -0.3, 0.0, 0.3, 0.6}) {
+          const double reach = options_.robot_radius_m + 0.05;
+          contacts_.emplace_back(at.x() + reach * std::cos(at.phi() + bearing),
+                                 at.y() + reach * std::sin(at.phi() + bearing));
+        }
       }
       status_.phase = ExplorerPhase::kBackingOff;
       back_off_until_ = time_s + kBackOffS;
       blocked_since_ = -1.0;
-      command = {kBackOffSpeed, 0.0};
+      command = guard({kBackOffSpeed, 0.0}, mrpt::poses::CPose2D(pose));
     }
   }
   status_.speed_command = command.speed;
@@ -181,6 +227,58 @@ bool FrontierExplorer::controlStep(mrpt::nav::CRobot2NavInterface& robot) {
   velocity_command.ang_vel = command.turn_rate;
   robot.changeSpeeds(velocity_command);
   return true;
+}
+
+void FrontierExplorer::readSensedObstacles(mrpt::nav::CRobot2NavInterface& robot, const mrpt::poses::CPose2D& pose,
+                                           double time_s) {
+  while (!recent_sensed_.empty() && time_s - recent_sensed_.front().first > kScanMemoryS) recent_sensed_.pop_front();
+  mrpt::maps::CSimplePointsMap points;
+  mrpt::system::TTimeStamp stamp = INVALID_TIMESTAMP;
+  if (!robot.senseObstacles(points, stamp) || stamp == last_scan_stamp_) return;
+  last_scan_stamp_ = stamp;
+  const double reach = kGuardHorizonM + options_.robot_radius_m + options_.guard_margin_m;
+  std::vector<mrpt::math::TPoint2D> local, in_map;
+  for (size_t i = 0; i < points.size(); ++i) {
+    float x = 0.0f, y = 0.0f, z = 0.0f;
+    points.getPoint(i, x, y, z);
+    local.emplace_back(x, y);
+    if (std::hypot(x, y) <= reach) in_map.push_back(composed(pose, local.back()));
+  }
+  recent_sensed_.emplace_back(time_s, std::move(in_map));
+  if (grid_) {
+    near_obstacles_.update(local, pose, [&](double x, double y) { return grid_->mapHoldsObstacle(x, y); });
+  }
+}
+
+FrontierExplorer::Command FrontierExplorer::guard(Command command, const mrpt::poses::CPose2D& pose) {
+  status_.free_travel_m = kGuardHorizonM;
+  if (command.speed == 0.0) return command;
+  const double reach = kGuardHorizonM + options_.robot_radius_m + options_.guard_margin_m;
+  std::vector<mrpt::math::TPoint2D> local;
+  const auto add = [&](const mrpt::math::TPoint2D& point) {
+    const mrpt::math::TPoint2D robot_frame = pose.inverseComposePoint(point);
+    if (std::hypot(robot_frame.x, robot_frame.y) <= reach) local.push_back(robot_frame);
+  };
+  for (const auto& scan : recent_sensed_) {
+    for (const mrpt::math::TPoint2D& point : scan.second) add(point);
+  }
+  for (const mrpt::math::TPoint2D& point : near_obstacles_.points()) add(point);
+  const double radius = options_.robot_radius_m + options_.guard_margin_m;
+  const double free = freeTravel(local, radius, command.speed, command.turn_rate, kGuardHorizonM);
+  status_.free_travel_m = free;
+  const double allowed = std::sqrt(2.0 * options_.braking_deceleration * std::max(0.0, free - kStopGapM));
+  if (std::abs(command.speed) <= allowed) return command;
+  if (allowed < kHeldSpeed) {
+    std::vector<mrpt::math::TPoint2D> holding;
+    for (const mrpt::math::TPoint2D& point : local) {
+      if (freeTravel({point}, radius, command.speed, command.turn_rate, kGuardHorizonM) <= free + kHoldingDepthM) {
+        holding.push_back(composed(pose, point));
+      }
+    }
+    near_obstacles_.remember(holding);
+  }
+  command.speed = std::copysign(allowed, command.speed);
+  return command;
 }
 
 FrontierExplorer::Command FrontierExplorer::lookAround(const mrpt::poses::CPose2D& pose) {
@@ -240,9 +338,12 @@ void FrontierExplorer::dropFrontier(size_t index, const mrpt::poses::CPose2D& po
 }
 
 FrontierExplorer::Command FrontierExplorer::decide(const mrpt::poses::CPose2D& pose, double time_s) {
-  if (!grid_) return {};
+  if (!grid_ || awaiting_map_) return {};
   if (looked_around_here_ && std::hypot(pose.x() - look_around_x_, pose.y() - look_around_y_) > kLookAroundSpacingM) {
     looked_around_here_ = false;
+  }
+  if (forgot_here_ && std::hypot(pose.x() - forgot_x_, pose.y() - forgot_y_) > kLookAroundSpacingM) {
+    forgot_here_ = false;
   }
   if (status_.phase == ExplorerPhase::kLookingAround) {
     const Command turn = lookAround(pose);
@@ -302,6 +403,15 @@ FrontierExplorer::Command FrontierExplorer::decide(const mrpt::poses::CPose2D& p
     } else if (frontiers_.empty()) {
       finish("no frontier left: the rest were looked at from up close without resolving (" +
              std::to_string(looked_from_.size()) + " looks)");
+    } else if (!forgot_here_ &&
+               near_obstacles_.forgetUnconfirmed([&](double x, double y) { return grid_->mapHoldsObstacle(x, y); }) > 0) {
+      // What closed the way may have been the robot's own memory of near obstacles: a person seen
+      // in the same place too often to have been seen gone. Only what the map still holds is kept
+      // now; plan again on the next map.
+      forgot_here_ = true;
+      forgot_x_ = pose.x();
+      forgot_y_ = pose.y();
+      awaiting_map_ = true;
     } else {
       size_t cells = 0;
       for (const Frontier& frontier : frontiers_) cells += frontier.cells.size();

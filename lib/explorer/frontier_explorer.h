@@ -3,6 +3,7 @@
 #include <mrpt/nav/reactive/CRobot2NavInterface.h>
 #include <mrpt/poses/CPose2D.h>
 
+#include <deque>
 #include <memory>
 #include <optional>
 #include <set>
@@ -14,6 +15,7 @@
 #include "explorer/explorer_options.h"
 #include "explorer/frontier_finder.h"
 #include "explorer/navigation_grid.h"
+#include "explorer/near_obstacle_memory.h"
 
 namespace stereonav {
 
@@ -39,6 +41,9 @@ struct ExplorerStatus {
   double cost_to_go = 0.0;         // metres-equivalent of path left (0 without target)
   double speed_command = 0.0;
   double turn_rate_command = 0.0;
+  // How far the body could go along the command's arc before touching what the newest stereo
+  // scans show (free_travel.h); the guard's look-ahead when nothing is in the way.
+  double free_travel_m = 0.0;
 };
 
 // Frontier-based exploration (paper section 5) over the stereo occupancy grid. The robot sits
@@ -50,6 +55,10 @@ struct ExplorerStatus {
 // Every new map (updateMap) rebuilds the cost-to-go towards all frontiers at once, so a plan the
 // map invalidates (an obstacle appears on the path, a corridor turns out to be a dead end, a
 // frontier closes) is replaced at the next frame without a separate recovery step.
+//
+// Under the planner a reactive guard reads the robot's sensed obstacles every cycle
+// (senseObstacles: the newest stereo scan) and brakes so that the body stops short of them and
+// of the obstacles seen up close earlier (near_obstacle_memory.h), which the planner avoids too.
 class FrontierExplorer {
  public:
   explicit FrontierExplorer(const ExplorerOptions& options);
@@ -76,6 +85,11 @@ class FrontierExplorer {
   Command drive(const mrpt::poses::CPose2D& pose, const std::vector<cv::Point>& path);
   Command turnTowards(const mrpt::poses::CPose2D& pose, double x, double y) const;
   Command lookAround(const mrpt::poses::CPose2D& pose);
+  // Reads a new scan, if there is one, into recent_sensed_ and near_obstacles_.
+  void readSensedObstacles(mrpt::nav::CRobot2NavInterface& robot, const mrpt::poses::CPose2D& pose, double time_s);
+  // `command` slowed so that the body can stop short of the sensed and remembered obstacles
+  // (free_travel.h).
+  Command guard(Command command, const mrpt::poses::CPose2D& pose);
   void finish(const std::string& reason);
   // Cells the robot at `pose` has in view within looked_at_range_m are never frontier again:
   // looking from there did not resolve them, and as the map changes the frontier may move by a
@@ -89,6 +103,11 @@ class FrontierExplorer {
   NavigationGridOptions grid_options_;
   std::vector<mrpt::poses::CPose2D> visited_;
   std::vector<cv::Point2d> contacts_;  // where the body met something unmapped
+  // Obstacle points of the scans of the last kScanMemoryS within the guard's reach (map frame),
+  // by the time they were read.
+  std::deque<std::pair<double, std::vector<mrpt::math::TPoint2D>>> recent_sensed_;
+  mrpt::system::TTimeStamp last_scan_stamp_ = INVALID_TIMESTAMP;
+  NearObstacleMemory near_obstacles_;
   std::unique_ptr<NavigationGrid> grid_;
   std::unique_ptr<CostToGoField> field_;
   std::vector<Frontier> frontiers_;
@@ -102,6 +121,12 @@ class FrontierExplorer {
   double turned_rad_ = 0.0;
   double last_phi_ = 0.0;
   bool looked_around_here_ = false;
+  // The memory of near obstacles was pruned to what the map holds (no frontier was reachable),
+  // here, and the next map has not come yet.
+  bool forgot_here_ = false;
+  double forgot_x_ = 0.0;
+  double forgot_y_ = 0.0;
+  bool awaiting_map_ = false;
   double look_around_x_ = 0.0;  // where the last full look-around was
   double look_around_y_ = 0.0;
   // Progress watch: the lowest cost-to-go reached and when.

@@ -23,13 +23,15 @@ cv::Mat1f distanceToBlocked(const cv::Mat1b& is_clear, double resolution) {
 
 NavigationGrid::NavigationGrid(const DisparityTaggedGrid& grid, const std::vector<mrpt::poses::CPose2D>& visited,
                                const NavigationGridOptions& options, const std::vector<cv::Point2d>& contacts)
-    : frame_(grid.frame()), cell_class_(grid.height(), grid.width()) {
+    : frame_(grid.frame()), cell_class_(grid.height(), grid.width()), sure_obstacle_(grid.height(), grid.width()) {
   const OccupancyScale& scale = grid.scale();
   for (int row = 0; row < grid.height(); ++row) {
     const uint8_t* g = grid.occupancyRow(row);
     const float* tag = grid.tagRow(row);
     uint8_t* out = cell_class_[row];
+    uint8_t* sure = sure_obstacle_[row];
     for (int col = 0; col < grid.width(); ++col) {
+      sure[col] = g[col] >= options.sure_obstacle_g ? 1 : 0;
       switch (scale.classify(g[col])) {
         case CellClass::kFree: out[col] = kFree; break;
         case CellClass::kUnknown: out[col] = kUnknown; break;
@@ -87,6 +89,11 @@ void NavigationGrid::fillHoles(int max_hole_cells) {
       if (is_hole[labels(row, col)]) cell_class_(row, col) = kFree;
     }
   }
+}
+
+bool NavigationGrid::mapHoldsObstacle(double x, double y) const {
+  int col = 0, row = 0;
+  return cellAt(x, y, col, row) && sure_obstacle_(row, col) != 0;
 }
 
 bool NavigationGrid::cellAt(double x, double y, int& col, int& row) const {

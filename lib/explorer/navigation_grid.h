@@ -24,6 +24,9 @@ struct NavigationGridOptions {
   // in a deep trapezoid. They block the robot like any obstacle, but looking closer resolves
   // them, so free cells next to them are frontiers. 0: every occupied cell is precise.
   float precise_min_disparity = 0.0f;
+  // Occupancy values G at or above this hold obstacle evidence from several readings (each adds
+  // K, paper section 3.4): mapHoldsObstacle.
+  int sure_obstacle_g = 200;
 };
 
 // The stereo grid as the planner sees it: each cell free, unknown, occupied only by imprecise
@@ -52,6 +55,9 @@ class NavigationGrid {
   double centreY(int row) const { return frame_.origin_y + (row + 0.5) * frame_.resolution; }
 
   uint8_t cellClass(int col, int row) const { return cell_class_(row, col); }
+  // Whether the stereo map itself is sure of an obstacle at (x, y): its occupancy value is at
+  // least sure_obstacle_g (the `contacts` the planner adds do not count).
+  bool mapHoldsObstacle(double x, double y) const;
   const cv::Mat1b& cellClasses() const { return cell_class_; }
   // Distance from the cell's centre to the nearest cell that is not free (or to the grid's edge),
   // counted to that cell's near edge: a disc of this radius at the centre overlaps free cells only.
@@ -64,6 +70,7 @@ class NavigationGrid {
 
   GridFrame frame_;
   cv::Mat1b cell_class_;
+  cv::Mat1b sure_obstacle_;
   cv::Mat1f clearance_m_;
   cv::Mat1f obstacle_distance_m_;
 };

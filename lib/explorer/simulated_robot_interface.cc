@@ -48,9 +48,29 @@ bool CSimulatedRobotInterface::stop(bool /*is_emergency_stop*/) {
   return true;
 }
 
-bool CSimulatedRobotInterface::senseObstacles(mrpt::maps::CSimplePointsMap& /*obstacles*/,
-                                              mrpt::system::TTimeStamp& /*timestamp*/) {
-  return false;
+void CSimulatedRobotInterface::setSensedObstacles(const mrpt::obs::CObservation2DRangeScan& scan,
+                                                  const mrpt::poses::CPose2D& pose) {
+  scan_points_.clear();
+  scan_points_.loadFromRangeScan(scan);
+  scan_pose_ = pose;
+  scan_time_ = scan.timestamp;
+  has_scan_ = true;
+}
+
+bool CSimulatedRobotInterface::senseObstacles(mrpt::maps::CSimplePointsMap& obstacles,
+                                              mrpt::system::TTimeStamp& timestamp) {
+  if (!has_scan_) return false;
+  obstacles.clear();
+  const mrpt::poses::CPose2D scan_in_current = scan_pose_ - pose();
+  for (size_t i = 0; i < scan_points_.size(); ++i) {
+    float x = 0.0f, y = 0.0f, z = 0.0f;
+    scan_points_.getPoint(i, x, y, z);
+    double current_x = 0.0, current_y = 0.0;
+    scan_in_current.composePoint(x, y, current_x, current_y);
+    obstacles.insertPoint(static_cast<float>(current_x), static_cast<float>(current_y), 0.0f);
+  }
+  timestamp = scan_time_;
+  return true;
 }
 
 mrpt::kinematics::CVehicleVelCmd::Ptr CSimulatedRobotInterface::getEmergencyStopCmd() { return getStopCmd(); }

@@ -1,6 +1,8 @@
 #pragma once
 
+#include <mrpt/maps/CSimplePointsMap.h>
 #include <mrpt/nav/reactive/CRobot2NavInterface.h>
+#include <mrpt/obs/CObservation2DRangeScan.h>
 
 #include "simulator/differential_drive_robot.h"
 
@@ -24,6 +26,11 @@ class CSimulatedRobotInterface : public mrpt::nav::CRobot2NavInterface {
   // The pose the navigator gets (and the map must be built at).
   mrpt::poses::CPose2D pose() const;
 
+  // The newest stereo scan as a virtual laser scan (robot frame, column_projection/
+  // virtual_range_scan.h), taken with the robot at pose() == `pose`: what senseObstacles reports
+  // until the next one, as the driver of a robot carrying the stereo head would.
+  void setSensedObstacles(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::poses::CPose2D& pose);
+
   bool getCurrentPoseAndSpeeds(mrpt::math::TPose2D& pose, mrpt::math::TTwist2D& velocity_global,
                                mrpt::system::TTimeStamp& timestamp, mrpt::math::TPose2D& odometry,
                                std::string& frame_id) override;
@@ -32,7 +39,8 @@ class CSimulatedRobotInterface : public mrpt::nav::CRobot2NavInterface {
   bool stop(bool is_emergency_stop) override;
   mrpt::kinematics::CVehicleVelCmd::Ptr getEmergencyStopCmd() override;
   mrpt::kinematics::CVehicleVelCmd::Ptr getStopCmd() override;
-  // The explorer's obstacles come from the stereo map, not from a sensor of the base: false.
+  // The newest scan's obstacle points in the robot's current frame (moved by the motion since the
+  // scan was taken), stamped with the scan's time; false before the first scan.
   bool senseObstacles(mrpt::maps::CSimplePointsMap& obstacles, mrpt::system::TTimeStamp& timestamp) override;
   // The navigator found the robot not moving though told to (it reverses out); counted.
   void sendApparentCollisionEvent() override { ++apparent_collisions_; }
@@ -50,6 +58,10 @@ class CSimulatedRobotInterface : public mrpt::nav::CRobot2NavInterface {
   double speed_ = 0.0;
   double turn_rate_ = 0.0;
   int apparent_collisions_ = 0;
+  bool has_scan_ = false;
+  mrpt::maps::CSimplePointsMap scan_points_;  // robot frame at scan_pose_
+  mrpt::poses::CPose2D scan_pose_;
+  mrpt::system::TTimeStamp scan_time_;
 };
 
 }  // namespace stereonav

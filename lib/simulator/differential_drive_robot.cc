@@ -41,8 +41,7 @@ DifferentialDriveOptions loadDifferentialDriveOptions(IniSection& section) {
 
 DifferentialDriveRobot::DifferentialDriveRobot(const World& world, DifferentialDriveOptions options,
                                                const mrpt::poses::CPose2D& start)
-    : world_(world),
-      options_(options),
+    : options_(options),
       pose_(start),
       odometry_(start),
       random_(static_cast<std::mt19937::result_type>(options.seed)) {
@@ -51,14 +50,12 @@ DifferentialDriveRobot::DifferentialDriveRobot(const World& world, DifferentialD
   }
 }
 
-bool DifferentialDriveRobot::footprintCollides(double x, double y, double time_s) const {
+bool DifferentialDriveRobot::footprintCollides(double x, double y, const std::vector<Solid>& moving_solids) const {
   for (const auto& solid : static_in_band_) {
     if (solidOverlapsDisc(solid, x, y, options_.radius_m)) return true;
   }
-  for (const auto& obstacle : world_.moving_obstacles) {
-    const Solid placed = obstacle.at(time_s);
-    if (solidInHeightBand(placed, 0.0, options_.height_m) &&
-        solidOverlapsDisc(placed, x, y, options_.radius_m)) {
+  for (const auto& solid : moving_solids) {
+    if (solidInHeightBand(solid, 0.0, options_.height_m) && solidOverlapsDisc(solid, x, y, options_.radius_m)) {
       return true;
     }
   }
@@ -66,7 +63,7 @@ bool DifferentialDriveRobot::footprintCollides(double x, double y, double time_s
 }
 
 bool DifferentialDriveRobot::step(double commanded_speed, double commanded_turn_rate, double dt,
-                                  double time_s) {
+                                  const std::vector<Solid>& moving_solids) {
   const double target_speed = std::clamp(commanded_speed, -options_.max_speed_mps, options_.max_speed_mps);
   const double target_turn = std::clamp(commanded_turn_rate, -options_.max_turn_rate, options_.max_turn_rate);
   speed_ = towards(speed_, target_speed, options_.max_acceleration * dt);
@@ -74,10 +71,9 @@ bool DifferentialDriveRobot::step(double commanded_speed, double commanded_turn_
 
   const double distance = speed_ * dt;
   const double turn = turn_rate_ * dt;
-  const double end_time = time_s + dt;
   const auto collidesAt = [&](double fraction) {
     const mrpt::poses::CPose2D there = pose_ + arcIncrement(fraction * distance, fraction * turn);
-    return footprintCollides(there.x(), there.y(), end_time);
+    return footprintCollides(there.x(), there.y(), moving_solids);
   };
 
   // Check the arc in pieces shorter than half the radius, so no thin wall is jumped over; then

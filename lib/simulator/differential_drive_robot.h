@@ -40,9 +40,9 @@ class DifferentialDriveRobot {
   DifferentialDriveRobot(const World& world, DifferentialDriveOptions options,
                          const mrpt::poses::CPose2D& start);
 
-  // Drives for dt seconds towards the commanded velocities; `time_s` is the time at the start of
-  // the step (it places the moving obstacles). Returns false if the robot hit something.
-  bool step(double commanded_speed, double commanded_turn_rate, double dt, double time_s);
+  // Drives for dt seconds towards the commanded velocities among the moving obstacles where they
+  // are at the end of the step (MovingTraffic::solids). Returns false if the robot hit something.
+  bool step(double commanded_speed, double commanded_turn_rate, double dt, const std::vector<Solid>& moving_solids);
 
   const mrpt::poses::CPose2D& pose() const { return pose_; }
   const mrpt::poses::CPose2D& odometry() const { return odometry_; }
@@ -55,9 +55,8 @@ class DifferentialDriveRobot {
 
  private:
   // Whether the footprint at (x, y) overlaps a solid of the world in the body's height band.
-  bool footprintCollides(double x, double y, double time_s) const;
+  bool footprintCollides(double x, double y, const std::vector<Solid>& moving_solids) const;
 
-  const World& world_;
   DifferentialDriveOptions options_;
   std::vector<Solid> static_in_band_;
   mrpt::poses::CPose2D pose_;

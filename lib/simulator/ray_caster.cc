@@ -28,7 +28,6 @@ constexpr int kMaxCellsPerAxis = 1024;
 
 RayCaster::RayCaster(const World& world, double cell_size_m)
     : world_(world), cell_size_(cell_size_m), tested_by_ray_(world.solids.size(), 0) {
-  setTime(0.0);
   if (world.solids.empty()) return;
   FloorExtent all = world.solids.front().floorExtent();
   solids_top_z_ = world.solids.front().z_max;
@@ -67,11 +66,6 @@ RayCaster::RayCaster(const World& world, double cell_size_m)
     cell_solids_.insert(cell_solids_.end(), cell.begin(), cell.end());
     cell_begin_.push_back(static_cast<int>(cell_solids_.size()));
   }
-}
-
-void RayCaster::setTime(double time_s) {
-  moving_.clear();
-  for (const auto& obstacle : world_.moving_obstacles) moving_.push_back(obstacle.at(time_s));
 }
 
 RayHit RayCaster::cast(const Ray& ray, double t_max) {

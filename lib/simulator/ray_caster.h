@@ -24,8 +24,8 @@ class RayCaster {
  public:
   explicit RayCaster(const World& world, double cell_size_m = 0.5);
 
-  // Places the moving obstacles where they are at `time_s`.
-  void setTime(double time_s);
+  // The moving obstacles where they are now (MovingTraffic::solids).
+  void setMovingSolids(const std::vector<Solid>& moving_solids) { moving_ = moving_solids; }
 
   // The nearest hit with t in (0, t_max), or t = kNoHit.
   RayHit cast(const Ray& ray, double t_max = kNoHit);
@@ -34,7 +34,7 @@ class RayCaster {
   void castThroughGrid(const Ray& ray, double* best_t, int* best_solid, int* best_face);
 
   const World& world_;
-  std::vector<Solid> moving_;  // world_.moving_obstacles placed at the current time
+  std::vector<Solid> moving_;
   double cell_size_;
   double grid_x_min_ = 0.0;
   double grid_y_min_ = 0.0;

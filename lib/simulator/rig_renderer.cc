@@ -49,8 +49,9 @@ mrpt::poses::CPose3D RigRenderer::secondaryPose(const mrpt::poses::CPose2D& robo
                               0.0, 0.0);
 }
 
-RigImages RigRenderer::render(const mrpt::poses::CPose2D& robot_pose, double time_s) {
-  ray_caster_.setTime(time_s);
+RigImages RigRenderer::render(const mrpt::poses::CPose2D& robot_pose, double time_s,
+                              const std::vector<Solid>& moving_solids) {
+  ray_caster_.setMovingSolids(moving_solids);
   const double gain = world_.lightingGain(time_s);
   const PinholeCamera& camera = rig_.reference;
   RigImages images;

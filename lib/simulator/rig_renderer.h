@@ -43,7 +43,9 @@ class RigRenderer {
  public:
   RigRenderer(const World& world, CameraRig rig, SensorOptions sensor);
 
-  RigImages render(const mrpt::poses::CPose2D& robot_pose, double time_s);
+  // The rig's view at `time_s` (the world's lighting), with the moving obstacles where they are
+  // then (MovingTraffic::solids; empty for a world without them).
+  RigImages render(const mrpt::poses::CPose2D& robot_pose, double time_s, const std::vector<Solid>& moving_solids);
 
   // The optical-frame pose in the world of the reference camera and of secondary camera i.
   mrpt::poses::CPose3D referencePose(const mrpt::poses::CPose2D& robot_pose) const;

@@ -2,6 +2,8 @@
 
 #include <mrpt/math/wrap2pi.h>
 
+#include "simulator/moving_traffic.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -63,6 +65,7 @@ SimulationSummary Simulation::run(const MotionPlan& plan,
   const mrpt::poses::CPose2D start(world_.start_pose[0], world_.start_pose[1], world_.start_pose[2]);
   DifferentialDriveRobot robot(world_, robot_, start);
   RigRenderer renderer(world_, rig_, sensor_);
+  MovingTraffic traffic(world_);
   SimulationSummary summary;
   const double dt = 1.0 / options_.control_rate_hz;
   size_t step = 0;
@@ -73,7 +76,7 @@ SimulationSummary Simulation::run(const MotionPlan& plan,
   const auto emitFrame = [&] {
     SimulatedFrame frame;
     frame.time_s = time;
-    frame.images = renderer.render(robot.pose(), time);
+    frame.images = renderer.render(robot.pose(), time, traffic.solids());
     frame.true_pose = robot.pose();
     frame.odometry = robot.odometry();
     frame.collisions = robot.collisionCount();
@@ -108,7 +111,8 @@ SimulationSummary Simulation::run(const MotionPlan& plan,
     if (time >= options_.max_duration_s - kTimeSlack) break;
 
     const mrpt::poses::CPose2D before = robot.pose();
-    robot.step(command.speed, command.turn_rate, dt, time);
+    traffic.advance(dt, robot.pose(), robot.speed(), robot_.radius_m);
+    robot.step(command.speed, command.turn_rate, dt, traffic.solids());
     summary.distance_m += std::hypot(robot.pose().x() - before.x(), robot.pose().y() - before.y());
     time = static_cast<double>(++step) * dt;
     if (time >= static_cast<double>(summary.frames) / options_.frame_rate_hz - kTimeSlack) emitFrame();

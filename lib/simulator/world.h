@@ -45,9 +45,10 @@ struct Solid {
 
 // A solid following a closed polyline of waypoints at constant speed (a box pushed around, a
 // person walking): the dynamic obstacles the paper's linear map update is meant to forget
-// (section 3.4).
+// (section 3.4). A simulation moves it with MovingTraffic, which makes it wait for the robot.
 struct MovingObstacle {
-  Solid solid;  // placed at path[0]
+  std::string name;  // its world file section, e.g. "moving.person"
+  Solid solid;       // placed at path[0]
   std::vector<Point2> path;
   double speed_mps = 0.5;
 

@@ -272,6 +272,7 @@ class WorldBuilder {
   void addMovingObstacle(IniSection& section) {
     acceptOnly(section, {"shape", "radius", "size", "yaw_deg", "height", "path", "speed", "texture"});
     MovingObstacle obstacle;
+    obstacle.name = section.name();
     obstacle.path = points(section, "path", 1);
     obstacle.speed_mps = nonNegative(section, "speed", 0.5);
     const std::string shape = section.getString("shape", "cylinder");

@@ -12,6 +12,7 @@
 #include "disparity/disparity_engine.h"
 #include "disparity/disparity_image.h"
 #include "rig/camera_rig.h"
+#include "simulator/moving_traffic.h"
 #include "simulator/rig_renderer.h"
 #include "simulator/world_loader.h"
 
@@ -39,7 +40,7 @@ Agreement matchOfficeViews(const std::vector<mrpt::poses::CPose2D>& poses) {
   Agreement agreement;
   cv::Mat1f disparity;
   for (const mrpt::poses::CPose2D& pose : poses) {
-    const RigImages images = renderer.render(pose, 0.0);
+    const RigImages images = renderer.render(pose, 0.0, MovingTraffic(world).solids());
     StereoFrame frame{images.reference, {}};
     for (size_t i = 0; i < rig.secondaries.size(); ++i) frame.secondaries.push_back({images.secondaries[i], rig.secondaries[i]});
     matcher.compute(frame, disparity);

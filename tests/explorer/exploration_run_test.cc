@@ -14,16 +14,20 @@
 namespace stereonav {
 namespace {
 
-// A 3.5 m x 3 m room with a crate, small enough for the 160x120 rig's short sight (its depth
-// steps are a metre deep beyond ~2.5 m) and for a closed loop in seconds.
+// A 3.5 m x 3 m room with a partition and a crate behind it, small enough for the 160x120 rig's
+// short sight (its depth steps are a metre deep beyond ~2.5 m) and for a closed loop in seconds.
+// From the start the rig sees most of the room but not behind the partition: the robot has to
+// drive round its end (a 1.3 m gap to the north wall).
 constexpr const char* kRoom = R"(
 [world]
 start_pose = 0.8 1.5 0
 ceiling_height = 2.5
 [wall.room]
 points = 0 0; 3.5 0; 3.5 3; 0 3; 0 0
+[wall.partition]
+points = 2 0; 2 1.7
 [box.crate]
-center = 2.4 0.8
+center = 2.8 0.8
 size = 0.5 0.5
 height = 0.8
 )";
@@ -61,16 +65,18 @@ TEST(ExplorationRunTest, ExploresASmallRoomWithoutCollisionAndTheRecordedRunRepl
   EXPECT_LT(report.sim_time_s, 200.0);
   EXPECT_EQ(report.collisions, 0);
   // Most of the free floor is mapped free (what is missed lies behind the crate and along walls
-  // seen only at a grazing angle); the room's area minus walls and crate is about 9.9 m2.
+  // seen only at a grazing angle). The floor inside the walls is 3.4 m x 2.9 m, 9.9 m2, less the
+  // crate and the partition, 9.4 m2; the body cannot sweep all of it (corners, the gap beside
+  // the crate), so the reachable part is less.
   EXPECT_GE(report.coverage.coverage, 0.7) << report.summary();
-  EXPECT_GT(report.coverage.reachable_free_m2, 8.0);
-  EXPECT_LT(report.coverage.reachable_free_m2, 10.0);
+  EXPECT_GT(report.coverage.reachable_free_m2, 7.0);
+  EXPECT_LT(report.coverage.reachable_free_m2, 9.4);
   EXPECT_GT(report.distance_m, 2.0);
   EXPECT_LE(report.top_speed_mps, config.explorer.max_speed_mps + 1e-9);
-  EXPECT_NEAR(static_cast<double>(report.frames), report.sim_time_s * config.simulation.frame_rate_hz, 1.0);
+  EXPECT_NEAR(static_cast<double>(report.frames), report.sim_time_s * config.simulator.simulation.frame_rate_hz, 1.0);
 
   for (const char* suffix : {".gridmap", ".png", ".yaml", ".pgm", ".3Dscene", ".path.txt", ".truth.txt",
-                             ".navlog.csv", ".path.png", ".stats.json"}) {
+                             ".navlog.csv", ".reactivenavlog", ".path.png", ".stats.json"}) {
     EXPECT_TRUE(std::filesystem::exists(job.output_prefix + suffix)) << suffix;
   }
   EXPECT_NE(readFile(job.output_prefix + ".stats.json").find("\"collisions\": 0"), std::string::npos);

@@ -3,6 +3,8 @@
 #include <mrpt/kinematics/CVehicleVelCmd_DiffDriven.h>
 #include <mrpt/math/wrap2pi.h>
 
+#include <mrpt/maps/CSimplePointsMap.h>
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -43,8 +45,18 @@ class KinematicRobot : public mrpt::nav::CRobot2NavInterface {
   mrpt::kinematics::CVehicleVelCmd::Ptr getStopCmd() override {
     return std::make_shared<mrpt::kinematics::CVehicleVelCmd_DiffDriven>();
   }
-  bool senseObstacles(mrpt::maps::CSimplePointsMap& /*obstacles*/, mrpt::system::TTimeStamp& /*stamp*/) override {
-    return false;
+  // `sensed_` (map frame) in the robot frame, as a new scan every 0.2 s.
+  bool senseObstacles(mrpt::maps::CSimplePointsMap& obstacles, mrpt::system::TTimeStamp& stamp) override {
+    if (sensed_.empty()) return false;
+    obstacles.clear();
+    const mrpt::poses::CPose2D robot(pose_);
+    for (const mrpt::math::TPoint2D& point : sensed_) {
+      double x = 0.0, y = 0.0;
+      robot.inverseComposePoint(point.x, point.y, x, y);
+      obstacles.insertPoint(static_cast<float>(x), static_cast<float>(y), 0.0f);
+    }
+    stamp = mrpt::Clock::fromDouble(std::floor(time_ / 0.2) * 0.2);
+    return true;
   }
   double getNavigationTime() override { return time_; }
   void resetNavigationTimer() override {}
@@ -58,6 +70,7 @@ class KinematicRobot : public mrpt::nav::CRobot2NavInterface {
   }
 
   mrpt::math::TPose2D pose_;
+  std::vector<mrpt::math::TPoint2D> sensed_;  // what its sensor sees, map frame
   double speed_ = 0.0;
   double turn_rate_ = 0.0;
   double time_ = 0.0;
@@ -172,6 +185,27 @@ TEST(FrontierExplorerTest, StopsWhenTheOnlyFrontierIsBeyondADoorTooNarrowForTheB
   }
   EXPECT_EQ(explorer.stopReason().rfind("no reachable frontier left", 0), 0u)
       << explorer.stopReason() << " " << phaseName(explorer.status().phase) << " " << robot.pose_.asString();
+}
+
+TEST(FrontierExplorerTest, BrakesForWhatOnlyTheSensorShowsAndThenPlansRoundIt) {
+  // The map shows the way east clear; the sensor sees a 0.4 m wide post across it at x = 2.5 (a
+  // table edge the map lost, a person): points 5 cm apart on its west face.
+  const TestGrid cells = openToTheEast();
+  FrontierExplorer explorer(testOptions());
+  KinematicRobot robot({1.0, 2.0, 0.0});
+  for (double y = 1.8; y <= 2.2 + 1e-9; y += 0.05) robot.sensed_.emplace_back(2.5, y);
+  double closest = 1e9;
+  for (int i = 0; i < 1200 && robot.pose_.x < 3.0; ++i) {
+    if (i % 4 == 0) explorer.updateMap(cells.grid(), mrpt::poses::CPose2D(robot.pose_));  // 5 Hz
+    if (!explorer.controlStep(robot)) break;
+    robot.step(0.05);
+    for (const mrpt::math::TPoint2D& point : robot.sensed_) {
+      closest = std::min(closest, std::hypot(point.x - robot.pose_.x, point.y - robot.pose_.y));
+    }
+  }
+  // It never touches the post (the body's radius), and gets past it.
+  EXPECT_GT(closest, testOptions().robot_radius_m);
+  EXPECT_GT(robot.pose_.x, 3.0) << robot.pose_.asString();
 }
 
 }  // namespace

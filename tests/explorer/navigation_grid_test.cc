@@ -23,6 +23,25 @@ TEST(NavigationGridTest, WhereTheRobotStoodIsFreeUnlessTheMapSaysOccupied) {
   EXPECT_EQ(grid.cellClass(12, 10), NavigationGrid::kUnknown);
 }
 
+TEST(NavigationGridTest, TheMapHoldsAnObstacleWhereItsOccupancyIsSureOfOne) {
+  TestGrid cells(20, 20);
+  cells.free(0, 0, 19, 19).occupied(10, 10, 10, 10).occupied(3, 3, 3, 3).tag(3, 3, 3, 3, 1.0f);
+  cells.fill(12, 10, 12, 10, 199).fill(13, 10, 13, 10, 200);
+  NavigationGridOptions options;
+  options.precise_min_disparity = 2.0f;
+  options.sure_obstacle_g = 200;
+  const NavigationGrid grid(cells.grid(), {}, options, {cv::Point2d(1.55, 1.55)});
+  EXPECT_TRUE(grid.mapHoldsObstacle(1.05, 1.05));
+  EXPECT_TRUE(grid.mapHoldsObstacle(0.35, 0.35));  // imprecise: an obstacle all the same
+  EXPECT_FALSE(grid.mapHoldsObstacle(1.25, 1.05));  // occupied (> 150), but not sure
+  EXPECT_EQ(grid.cellClass(12, 10), NavigationGrid::kOccupied);
+  EXPECT_TRUE(grid.mapHoldsObstacle(1.35, 1.05));
+  EXPECT_EQ(grid.cellClass(15, 15), NavigationGrid::kOccupied);  // the contact
+  EXPECT_FALSE(grid.mapHoldsObstacle(1.55, 1.55));
+  EXPECT_FALSE(grid.mapHoldsObstacle(0.55, 1.05));
+  EXPECT_FALSE(grid.mapHoldsObstacle(-0.5, 1.05));  // off the map
+}
+
 TEST(NavigationGridTest, ClearanceIsTheDistanceToTheNearestCellThatIsNotFree) {
   TestGrid cells(20, 20);
   cells.free(0, 0, 19, 19).occupied(10, 0, 10, 19);

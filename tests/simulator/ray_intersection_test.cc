@@ -6,6 +6,7 @@
 #include <cmath>
 #include <random>
 
+#include "simulator/moving_traffic.h"
 #include "simulator/ray_caster.h"
 #include "world_text.h"
 
@@ -115,6 +116,7 @@ TEST(RayCaster, TableTopIsHitFromTheSideAndFromBelowAndTheRayPassesUnderIt) {
 TEST(RayCaster, GridTraversalFindsTheSameHitsAsTestingEverySolid) {
   const World world = loadWorld(worldsDirectory() + "/office.ini");
   RayCaster caster(world);
+  caster.setMovingSolids(MovingTraffic(world).solids());  // at the start of their paths
   std::mt19937 random(7);
   std::uniform_real_distribution<double> x_position(world.bounds[0], world.bounds[2]);
   std::uniform_real_distribution<double> y_position(world.bounds[1], world.bounds[3]);

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "disparity/disparity_image.h"
+#include "simulator/moving_traffic.h"
 #include "world_text.h"
 
 namespace stereonav {
@@ -44,7 +45,7 @@ TEST(RigRenderer, TrueDisparityOfAFrontoParallelWallAndTheFloorIsFBOverZ) {
   // Wall face at x = 3 (centre line 3.05, 0.1 thick), tall enough to fill the upper image.
   const World world = worldFromText("[wall.w]\npoints = 3.05 -50; 3.05 50\nheight = 50\n");
   RigRenderer renderer(world, smallRig(), noiseless());
-  const RigImages images = renderer.render(mrpt::poses::CPose2D(0, 0, 0), 0.0);
+  const RigImages images = renderer.render(mrpt::poses::CPose2D(0, 0, 0), 0.0, {});
   ASSERT_EQ(images.true_disparity.size(), cv::Size(160, 120));
   const double f = 100.0, baseline = 0.1, camera_height = 0.5, cy = 59.5;
   for (int y = 0; y < 120; ++y) {
@@ -61,7 +62,7 @@ TEST(RigRenderer, TrueDisparityOfAFrontoParallelWallAndTheFloorIsFBOverZ) {
 TEST(RigRenderer, NothingHitIsInvalidDisparity) {
   const World world = worldFromText("[box.b]\ncenter = 3 0\nsize = 1 1\nheight = 1\n");
   RigRenderer renderer(world, smallRig(), noiseless());
-  const RigImages images = renderer.render(mrpt::poses::CPose2D(0, 0, 0), 0.0);
+  const RigImages images = renderer.render(mrpt::poses::CPose2D(0, 0, 0), 0.0, {});
   // The top row looks up into the empty sky; the centre sees the box at 2.5 m.
   for (int x = 0; x < 160; ++x) EXPECT_FALSE(isValidDisparity(images.true_disparity(0, x)));
   EXPECT_NEAR(images.true_disparity(59, 79), 10.0 / 2.5, 1e-4);
@@ -74,7 +75,7 @@ TEST(RigRenderer, SecondaryImagesAgreeWithTheTrueDisparity) {
   const CameraRig rig = smallRig();
   RigRenderer renderer(world, rig, sensor);
   const mrpt::poses::CPose2D robot(world.start_pose[0], world.start_pose[1], world.start_pose[2]);
-  const RigImages images = renderer.render(robot, 0.0);
+  const RigImages images = renderer.render(robot, 0.0, {});
   const mrpt::poses::CPose3D reference = mrpt::poses::CPose3D(robot) + rig.pose_on_robot;
   for (size_t i = 0; i < rig.secondaries.size(); ++i) {
     SCOPED_TRACE(i);
@@ -121,7 +122,7 @@ TEST(RigRenderer, IntegerDisparityPixelsMatchExactlyWithoutNoise) {
   // Wall at Z = 2.5 m: d = 100 * 0.1 / 2.5 = 4 px, so the secondary pixel lies on the grid.
   const World world = worldFromText("[wall.w]\npoints = 2.55 -50; 2.55 50\nheight = 50\n");
   RigRenderer renderer(world, smallRig(), noiseless());
-  const RigImages images = renderer.render(mrpt::poses::CPose2D(0, 0, 0), 0.0);
+  const RigImages images = renderer.render(mrpt::poses::CPose2D(0, 0, 0), 0.0, {});
   int compared = 0;
   for (int y = 10; y < 60; ++y) {
     for (int x = 10; x < 150; ++x) {
@@ -147,7 +148,7 @@ TEST(RigRenderer, DetailFinerThanAPixelIsAveragedNotAliased) {
   RigRenderer renderer(world, smallRig(), noiseless());
   const cv::Rect wall(0, 0, 160, 55);
   for (double y : {0.0, 0.003, 0.0071}) {
-    const RigImages images = renderer.render(mrpt::poses::CPose2D(0, y, 0), 0.0);
+    const RigImages images = renderer.render(mrpt::poses::CPose2D(0, y, 0), 0.0, {});
     cv::Scalar mean, deviation;
     cv::meanStdDev(images.reference(wall), mean, deviation);
     EXPECT_LT(deviation[0], 1.0) << "camera at y = " << y;
@@ -162,9 +163,9 @@ TEST(RigRenderer, NoiseIsSeededAndHasTheRequestedDeviation) {
   SensorOptions second = first;
   second.seed = 12;
   const mrpt::poses::CPose2D pose(0, 0, 0);
-  const RigImages a = RigRenderer(world, smallRig(), first).render(pose, 0.0);
-  const RigImages again = RigRenderer(world, smallRig(), first).render(pose, 0.0);
-  const RigImages b = RigRenderer(world, smallRig(), second).render(pose, 0.0);
+  const RigImages a = RigRenderer(world, smallRig(), first).render(pose, 0.0, {});
+  const RigImages again = RigRenderer(world, smallRig(), first).render(pose, 0.0, {});
+  const RigImages b = RigRenderer(world, smallRig(), second).render(pose, 0.0, {});
   EXPECT_EQ(cv::norm(a.reference, again.reference, cv::NORM_INF), 0.0);
   cv::Mat1f difference;
   cv::subtract(a.reference, b.reference, difference, cv::noArray(), CV_32F);
@@ -183,28 +184,30 @@ TEST(RigRenderer, LightingChangesBrightnessOverTime) {
   RigRenderer renderer(world, smallRig(), noiseless());
   // The upper half of the image sees only the painted wall.
   const cv::Rect wall(0, 0, 160, 60);
-  const double at_zero = cv::mean(renderer.render(mrpt::poses::CPose2D(0, 0, 0), 0.0).reference(wall))[0];
-  const double at_peak = cv::mean(renderer.render(mrpt::poses::CPose2D(0, 0, 0), 1.0).reference(wall))[0];
+  const double at_zero = cv::mean(renderer.render(mrpt::poses::CPose2D(0, 0, 0), 0.0, {}).reference(wall))[0];
+  const double at_peak = cv::mean(renderer.render(mrpt::poses::CPose2D(0, 0, 0), 1.0, {}).reference(wall))[0];
   EXPECT_NEAR(at_peak / at_zero, 1.2, 0.01);
 }
 
-TEST(RigRenderer, MovingObstacleIsWhereItsPathSaysAtTheFrameTime) {
+TEST(RigRenderer, MovingObstaclesAreRenderedWhereTheTrafficHasThem) {
   // A person (r = 0.25) walking from y = -2 to y = 2 along x = 3 at 1 m/s, in front of a wall at 6.
   const World world = worldFromText(
       "[wall.w]\npoints = 6.05 -50; 6.05 50\nheight = 50\n"
       "[moving.person]\nshape = cylinder\nradius = 0.25\npath = 3 -2; 3 2\nspeed = 1\n");
   RigRenderer renderer(world, smallRig(), noiseless());
   const mrpt::poses::CPose2D pose(0, 0, 0);
-  EXPECT_NEAR(renderer.render(pose, 0.0).true_disparity(59, 79), 10.0 / 6.0, 1e-3);
+  MovingTraffic traffic(world);
+  EXPECT_NEAR(renderer.render(pose, 0.0, traffic.solids()).true_disparity(59, 79), 10.0 / 6.0, 1e-3);
   // At t = 2 s the person stands on the optical axis: its surface is at 3 - 0.25.
-  EXPECT_NEAR(renderer.render(pose, 2.0).true_disparity(59, 79), 10.0 / 2.75, 1e-3);
+  traffic.advance(2.0, pose, 0.0, 0.3);
+  EXPECT_NEAR(renderer.render(pose, 2.0, traffic.solids()).true_disparity(59, 79), 10.0 / 2.75, 1e-3);
 }
 
 TEST(RigRenderer, PoseOfTheRobotMovesTheView) {
   // Turning the robot left by 90 degrees in front of a wall at y = 4 sees it at Z = 4.
   const World world = worldFromText("[wall.w]\npoints = -50 4.05; 50 4.05\nheight = 50\n");
   RigRenderer renderer(world, smallRig(), noiseless());
-  const RigImages images = renderer.render(mrpt::poses::CPose2D(1.0, 0.0, M_PI / 2), 0.0);
+  const RigImages images = renderer.render(mrpt::poses::CPose2D(1.0, 0.0, M_PI / 2), 0.0, {});
   EXPECT_NEAR(images.true_disparity(30, 79), 10.0 / 4.0, 1e-4);
 }
 

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "simulator/moving_traffic.h"
 #include "simulator/ray_caster.h"
 
 #include "simulator/rig_renderer.h"
@@ -25,12 +26,14 @@ void renderFrames(benchmark::State& state, const char* world_name, int width) {
   rig.reference = {width, width * 3 / 4, width / 2.0, (width - 1) / 2.0, (width * 3 / 4 - 1) / 2.0};
   RigRenderer renderer(world, rig, SensorOptions{});
   mrpt::poses::CPose2D pose(world.start_pose[0], world.start_pose[1], world.start_pose[2]);
+  MovingTraffic traffic(world);
   double time = 0.0;
   for (auto _ : state) {
     // Turn on the spot so every frame sees a different part of the world.
     pose.phi_incr(0.2);
     time += 0.2;
-    benchmark::DoNotOptimize(renderer.render(pose, time));
+    traffic.advance(0.2, pose, 0.0, 0.3);
+    benchmark::DoNotOptimize(renderer.render(pose, time, traffic.solids()));
   }
   state.counters["rays/s"] = benchmark::Counter(
       static_cast<double>(state.iterations()) * width * (width * 3 / 4) * 3, benchmark::Counter::kIsRate);

@@ -94,6 +94,7 @@ TEST(WorldLoader, MovingObstacleLoopsAlongItsPath) {
   const World world = worldFromText("[moving.person]\npath = 0 0; 4 0; 4 3\nspeed = 1\nradius = 0.25\n");
   ASSERT_EQ(world.moving_obstacles.size(), 1u);
   const MovingObstacle& person = world.moving_obstacles[0];
+  EXPECT_EQ(person.name, "moving.person");
   EXPECT_NEAR(person.at(2.0).x, 2.0, 1e-12);
   EXPECT_NEAR(person.at(5.0).x, 4.0, 1e-12);
   EXPECT_NEAR(person.at(5.0).y, 1.0, 1e-12);

@@ -1,0 +1,22 @@
+#pragma once
+
+#include <mrpt/math/TPoint2D.h>
+
+#include <vector>
+
+namespace stereonav {
+
+// How far the robot's disc (radius `radius_m`, centred on the robot frame's origin) can travel
+// along the arc that `speed_mps` and `turn_rate` describe, forwards or backwards, before it
+// touches one of `obstacles` (robot frame: x ahead, y to the left); `horizon_m` when nothing is
+// in the way that soon. Turning on the spot sweeps no new ground: horizon_m. A point already
+// under the disc stops it (0) if it lies on the side the robot is moving towards, and is ignored
+// if it lies behind.
+//
+// The reactive layer under the planner: the explorer brakes for what the newest stereo scans
+// show, whatever the map says (a table top far views have cleared, paper section 6.1; a person
+// walking in, section 3.4).
+double freeTravel(const std::vector<mrpt::math::TPoint2D>& obstacles, double radius_m, double speed_mps,
+                  double turn_rate, double horizon_m);
+
+}  // namespace stereonav

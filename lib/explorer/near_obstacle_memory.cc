@@ -1,0 +1,76 @@
+#include "explorer/near_obstacle_memory.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace stereonav {
+
+void NearObstacleMemory::update(const std::vector<mrpt::math::TPoint2D>& sensed, const mrpt::poses::CPose2D& pose,
+                                const std::function<bool(double x, double y)>& confirmed) {
+  // The scan by bearing: per bin of bearing_window_rad the nearest range and the count.
+  const int bins = std::max(1, static_cast<int>(std::ceil(2.0 * M_PI / options_.bearing_window_rad)));
+  const double bin_width = 2.0 * M_PI / bins;
+  std::vector<double> nearest(static_cast<size_t>(bins), std::numeric_limits<double>::infinity());
+  std::vector<int> count(static_cast<size_t>(bins), 0);
+  const auto binOf = [&](double bearing) {
+    const int bin = static_cast<int>(std::floor((bearing + M_PI) / bin_width));
+    return ((bin % bins) + bins) % bins;
+  };
+  for (const mrpt::math::TPoint2D& point : sensed) {
+    const int bin = binOf(std::atan2(point.y, point.x));
+    nearest[bin] = std::min(nearest[bin], std::hypot(point.x, point.y));
+    ++count[bin];
+  }
+
+  for (auto it = cells_.begin(); it != cells_.end();) {
+    double x = 0.0, y = 0.0;
+    pose.inverseComposePoint(it->second.x, it->second.y, x, y);
+    const double range = std::hypot(x, y);
+    bool seen_past = false;
+    if (range >= options_.judge_beyond_m && range <= options_.remember_within_m) {
+      // The bin of the point and its neighbours on both sides: the window around its bearing.
+      const int centre = binOf(std::atan2(y, x));
+      int points = 0;
+      double closest = std::numeric_limits<double>::infinity();
+      for (int offset = -1; offset <= 1; ++offset) {
+        const int bin = ((centre + offset) % bins + bins) % bins;
+        points += count[bin];
+        closest = std::min(closest, nearest[bin]);
+      }
+      seen_past = points >= 2 && closest > range + options_.see_through_margin_m;
+    }
+    it = seen_past ? cells_.erase(it) : std::next(it);
+  }
+
+  for (const mrpt::math::TPoint2D& point : sensed) {
+    if (std::hypot(point.x, point.y) > options_.remember_within_m) continue;
+    double x = 0.0, y = 0.0;
+    pose.composePoint(point.x, point.y, x, y);
+    if (!confirmed(x, y)) continue;
+    cells_[{std::lround(x / options_.cell_m), std::lround(y / options_.cell_m)}] = mrpt::math::TPoint2D(x, y);
+  }
+}
+
+void NearObstacleMemory::remember(const std::vector<mrpt::math::TPoint2D>& points) {
+  for (const mrpt::math::TPoint2D& point : points) {
+    cells_[{std::lround(point.x / options_.cell_m), std::lround(point.y / options_.cell_m)}] = point;
+  }
+}
+
+size_t NearObstacleMemory::forgetUnconfirmed(const std::function<bool(double x, double y)>& confirmed) {
+  const size_t before = cells_.size();
+  for (auto it = cells_.begin(); it != cells_.end();) {
+    it = confirmed(it->second.x, it->second.y) ? std::next(it) : cells_.erase(it);
+  }
+  return before - cells_.size();
+}
+
+std::vector<mrpt::math::TPoint2D> NearObstacleMemory::points() const {
+  std::vector<mrpt::math::TPoint2D> points;
+  points.reserve(cells_.size());
+  for (const auto& cell : cells_) points.push_back(cell.second);
+  return points;
+}
+
+}  // namespace stereonav

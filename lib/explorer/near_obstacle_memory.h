@@ -1,0 +1,60 @@
+#pragma once
+
+#include <mrpt/math/TPoint2D.h>
+#include <mrpt/poses/CPose2D.h>
+
+#include <functional>
+#include <map>
+#include <utility>
+#include <vector>
+
+namespace stereonav {
+
+struct NearObstacleMemoryOptions {
+  // Obstacle points the stereo head sees closer than this to the robot are remembered.
+  double remember_within_m = 2.0;
+  // A remembered point is forgotten when a later scan sees past it, judged only from this far
+  // out: nearer, below the tilted cameras' view, a low obstacle drops out of sight and the scan
+  // sees the wall behind it.
+  double judge_beyond_m = 1.0;
+  // "Seeing past": the scan has at least two points in the bearing bins (bearing_window_rad wide)
+  // of the remembered point and its two neighbours, all more than `see_through_margin_m` beyond it.
+  double see_through_margin_m = 0.3;
+  double bearing_window_rad = 0.035;  // 2 degrees: the camera sits ahead of the robot's centre
+  double cell_m = 0.05;               // points are kept one per cell of this size
+};
+
+// What the stereo head has seen up close, kept until it is seen to be gone. The paper's linear
+// grid update forgets an obstacle as soon as far views see past it (section 3.4), which is right
+// for the person who walked on, but wrong for a chair seat or table top that stereo sees only
+// from up close and that far views see under (section 6.1): in the office runs the robot drove
+// into chairs the map had lost. Up close the cameras do see such things, so the explorer keeps
+// them until a later view from nearby sees past them: a moving obstacle that has left is
+// forgotten, a chair is not. Only points the map confirms are kept (its cell occupied: the
+// update rule wants repeated OCC evidence), so that a single noisy reading (the floor seen a
+// few centimetres high) is not an obstacle for ever.
+class NearObstacleMemory {
+ public:
+  explicit NearObstacleMemory(const NearObstacleMemoryOptions& options) : options_(options) {}
+
+  // `sensed`: the newest scan's obstacle points in the robot frame, taken at `pose` (map frame);
+  // `confirmed(x, y)`: whether the map holds an obstacle at map point (x, y).
+  void update(const std::vector<mrpt::math::TPoint2D>& sensed, const mrpt::poses::CPose2D& pose,
+              const std::function<bool(double x, double y)>& confirmed);
+
+  // Remembers map points without the map's confirmation: what physically stopped the robot.
+  void remember(const std::vector<mrpt::math::TPoint2D>& points);
+
+  // Forgets every point where `confirmed(x, y)` is false; returns how many.
+  size_t forgetUnconfirmed(const std::function<bool(double x, double y)>& confirmed);
+
+  // The remembered points, map frame.
+  std::vector<mrpt::math::TPoint2D> points() const;
+  size_t size() const { return cells_.size(); }
+
+ private:
+  NearObstacleMemoryOptions options_;
+  std::map<std::pair<long, long>, mrpt::math::TPoint2D> cells_;
+};
+
+}  // namespace stereonav
