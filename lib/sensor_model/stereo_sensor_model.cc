@@ -93,9 +93,12 @@ ColumnReading StereoSensorModel::reading(int column, float disparity,
   reading.disparity = disparity;
   if (isValidDisparity(disparity)) {
     reading.near_depth_m = camera.depthForDisparity(disparity + 0.5);
-    // Equation 1 with d - 0.5 <= 0 puts the obstacle out to infinity.
-    reading.far_depth_m = disparity > 0.5f ? camera.depthForDisparity(disparity - 0.5)
-                                           : options_.max_range_m;
+    // Equation 1 with d - 0.5 <= 0 puts the obstacle out to infinity, and just above 0.5
+    // kilometres away: the region stops at max_range_m.
+    reading.far_depth_m =
+        disparity > 0.5f
+            ? std::min(camera.depthForDisparity(disparity - 0.5), options_.max_range_m)
+            : options_.max_range_m;
     reading.far_depth_m = std::max(reading.far_depth_m, reading.near_depth_m);
   } else {
     reading.near_depth_m = reading.far_depth_m = options_.clear_invalid_columns_to_m;

@@ -96,6 +96,10 @@ TEST(StereoSensorModelTest, DisparityAtMostHalfAPixelReachesMaxRange) {
   const ColumnReading zero = model.readingForDisparity(50, 0.0f, cam);
   EXPECT_DOUBLE_EQ(zero.near_depth_m, 20.0);  // Z(0.5)
   EXPECT_DOUBLE_EQ(zero.far_depth_m, 30.0);
+  // Just above half a pixel, Z(d - 0.5) = 10 / 0.01 = 1000 m: the region stops at max range.
+  const ColumnReading just_above = model.readingForDisparity(50, 0.51f, cam);
+  EXPECT_NEAR(just_above.near_depth_m, 10.0 / 1.01, 1e-6);
+  EXPECT_DOUBLE_EQ(just_above.far_depth_m, 30.0);
   // Beyond max range there is no OCC region, only CLEAR.
   options.max_range_m = 15.0;
   EXPECT_FALSE(StereoSensorModel(options).readingForDisparity(50, 0.0f, cam).hasOccupiedRegion());
