@@ -19,9 +19,10 @@ constexpr const char* kUsage =
     "Writes the map outputs of 'stereonav map' (PREFIX.gridmap .png .yaml .pgm .3Dscene), the path\n"
     "(PREFIX.path.txt odometry, PREFIX.truth.txt true poses, 't x y phi' per frame), the navigation\n"
     "trace PREFIX.navlog.csv (and PREFIX.reactivenavlog for MRPT's navlog-viewer), the map with the\n"
-    "path PREFIX.path.png and PREFIX.stats.json (coverage of the reachable free space against the\n"
-    "world's ground truth, distance, times, collisions, stop reason). --record writes the frames\n"
-    "with odometry as a rawlog (+ OUT.gt.txt) that 'stereonav map' replays to the same map.\n"
+    "path PREFIX.path.png, the explorer's last plan PREFIX.plan.png and PREFIX.stats.json\n"
+    "(coverage of the reachable free space against the world's ground truth, distance, times,\n"
+    "collisions and what they touched, stop reason). --record writes the frames with odometry as\n"
+    "a rawlog (+ OUT.gt.txt) that 'stereonav map' replays to the same map.\n"
     "--seed N seeds the noise and moves the start up to 0.5 m with any heading; --max-time\n"
     "overrides [simulation] max_duration_s.\n";
 
@@ -48,7 +49,7 @@ int runExploreCommand(const std::vector<std::string>& arguments) {
   const ExplorationReport report = runExploration(world, config, job);
   std::cerr << "stereonav explore: " << report.summary() << "\n"
             << "stereonav explore: wrote " << job.output_prefix
-            << ".{gridmap,png,yaml,pgm,3Dscene,path.txt,truth.txt,navlog.csv,reactivenavlog,path.png,stats.json}"
+            << ".{gridmap,png,yaml,pgm,3Dscene,path.txt,truth.txt,navlog.csv,reactivenavlog,path.png,plan.png,stats.json}"
             << (job.record_rawlog.empty() ? "" : " and " + job.record_rawlog) << "\n";
   return 0;
 }

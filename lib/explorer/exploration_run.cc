@@ -321,6 +321,12 @@ ExplorationReport runExploration(const World& world, const ExplorationConfig& co
   writeStringAtomically(job.output_prefix + ".navlog.csv", navlog.str());
   reactive_navlog.save(job.output_prefix + ".reactivenavlog");
   savePathImage(grid, map_path, job.output_prefix + ".path.png");
+  const cv::Mat3b plan = explorer.planImage();
+  if (!plan.empty()) {
+    writeFileAtomically(job.output_prefix + ".plan.png", [&](const std::string& temporary) {
+      if (!cv::imwrite(temporary, plan)) throw std::runtime_error(job.output_prefix + ".plan.png: cannot write the image");
+    });
+  }
   report.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   writeStringAtomically(job.output_prefix + ".stats.json", report.toJson());
   return report;

@@ -36,6 +36,7 @@ struct ExplorationJob {
   // <prefix>.navlog.csv the navigation trace, one line per frame
   // <prefix>.reactivenavlog the same for MRPT's navlog-viewer (reactive_nav_log.h)
   // <prefix>.path.png   the map with the path drawn (red; start green, end blue)
+  // <prefix>.plan.png   the explorer's last plan (FrontierExplorer::planImage)
   // <prefix>.stats.json ExplorationReport::toJson()
   std::string output_prefix;
   // "" = do not record; else the rig frames with odometry (+ .gt.txt); with pose_source =

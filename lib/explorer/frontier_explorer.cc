@@ -19,10 +19,10 @@ namespace {
 constexpr double kFacedRad = 0.2;
 constexpr double kMinTurnRate = 0.25;
 // After facing a frontier the robot holds still this long so that the map sees what is behind it
-// before the frontier is judged: taking an unknown cell (128) below the free threshold (50) takes
-// four CLEAR updates of K = 20 (paper section 3.4), and not every frame's scan reaches every cell
-// (six frames at 5 Hz).
-constexpr double kLookHoldS = 1.2;
+// before the frontier is judged: taking a cell that far readings saturated (255) below the free
+// threshold (50) takes eleven CLEAR updates of K = 20 (paper section 3.4), twelve frames at 5 Hz.
+// A frontier that resolves sooner ends the look at once (the next plan has another target).
+constexpr double kLookHoldS = 2.4;
 // Progress: the cost-to-go must drop by this much within stuck_timeout_s.
 constexpr double kProgressM = 0.3;
 // A robot that has moved this far from its last look-around may look around again.
@@ -187,7 +187,7 @@ bool FrontierExplorer::controlStep(mrpt::nav::CRobot2NavInterface& robot) {
   readSensedObstacles(robot, mrpt::poses::CPose2D(pose), time_s);
   Command command;
   if (status_.phase == ExplorerPhase::kBackingOff && time_s < back_off_until_) {
-    command = guard({kBackOffSpeed, 0.0}, mrpt::poses::CPose2D(pose));
+    command = backOff(mrpt::poses::CPose2D(pose));
   } else {
     if (status_.phase == ExplorerPhase::kBackingOff) status_.phase = ExplorerPhase::kTurning;
     const Command wanted = decide(mrpt::poses::CPose2D(pose), time_s);
@@ -213,7 +213,7 @@ bool FrontierExplorer::controlStep(mrpt::nav::CRobot2NavInterface& robot) {
       status_.phase = ExplorerPhase::kBackingOff;
       back_off_until_ = time_s + kBackOffS;
       blocked_since_ = -1.0;
-      command = guard({kBackOffSpeed, 0.0}, mrpt::poses::CPose2D(pose));
+      command = backOff(mrpt::poses::CPose2D(pose));
     }
   }
   status_.speed_command = command.speed;
@@ -250,6 +250,13 @@ void FrontierExplorer::readSensedObstacles(mrpt::nav::CRobot2NavInterface& robot
   }
 }
 
+FrontierExplorer::Command FrontierExplorer::backOff(const mrpt::poses::CPose2D& pose) {
+  const Command reverse = guard({kBackOffSpeed, 0.0}, pose);
+  // Hemmed in behind as well: turn on the spot instead (a disc turning touches nothing), which
+  // shows the cameras another way out.
+  return reverse.speed < 0.0 ? reverse : Command{0.0, options_.look_around_turn_rate};
+}
+
 FrontierExplorer::Command FrontierExplorer::guard(Command command, const mrpt::poses::CPose2D& pose) {
   status_.free_travel_m = kGuardHorizonM;
   if (command.speed == 0.0) return command;
@@ -279,6 +286,35 @@ FrontierExplorer::Command FrontierExplorer::guard(Command command, const mrpt::p
   }
   command.speed = std::copysign(allowed, command.speed);
   return command;
+}
+
+cv::Mat3b FrontierExplorer::planImage() const {
+  cv::Mat3b image;
+  if (!grid_) return image;
+  image.create(grid_->height(), grid_->width());
+  const auto pixel = [&](int col, int row) -> cv::Vec3b& { return image(grid_->height() - 1 - row, col); };
+  for (int row = 0; row < grid_->height(); ++row) {
+    for (int col = 0; col < grid_->width(); ++col) {
+      switch (grid_->cellClass(col, row)) {
+        case NavigationGrid::kFree:
+          pixel(col, row) = field_->traversable(col, row) ? cv::Vec3b(200, 255, 200) : cv::Vec3b(255, 255, 255);
+          break;
+        case NavigationGrid::kUnknown: pixel(col, row) = cv::Vec3b(128, 128, 128); break;
+        case NavigationGrid::kImprecise: pixel(col, row) = cv::Vec3b(64, 64, 64); break;
+        default: pixel(col, row) = cv::Vec3b(0, 0, 0); break;
+      }
+    }
+  }
+  for (const Frontier& frontier : frontiers_) {
+    for (const cv::Point& cell : frontier.cells) pixel(cell.x, cell.y) = cv::Vec3b(255, 0, 0);
+  }
+  const auto mark = [&](double x, double y) {
+    int col = 0, row = 0;
+    if (grid_->cellAt(x, y, col, row)) pixel(col, row) = cv::Vec3b(0, 0, 255);
+  };
+  for (const mrpt::math::TPoint2D& point : near_obstacles_.points()) mark(point.x, point.y);
+  for (const cv::Point2d& contact : contacts_) mark(contact.x, contact.y);
+  return image;
 }
 
 FrontierExplorer::Command FrontierExplorer::lookAround(const mrpt::poses::CPose2D& pose) {

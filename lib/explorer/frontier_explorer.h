@@ -74,6 +74,11 @@ class FrontierExplorer {
   const std::string& stopReason() const { return stop_reason_; }
   const ExplorerStatus& status() const { return status_; }
 
+  // The newest plan as the explorer sees it, one pixel per cell, top row = max y: obstacles black
+  // (imprecise ones dark grey), unknown grey, free white, cells where the body fits light green,
+  // frontier cells blue, remembered near obstacles and contacts red. Empty before the first map.
+  cv::Mat3b planImage() const;
+
  private:
   struct Command {
     double speed = 0.0;
@@ -90,6 +95,8 @@ class FrontierExplorer {
   // `command` slowed so that the body can stop short of the sensed and remembered obstacles
   // (free_travel.h).
   Command guard(Command command, const mrpt::poses::CPose2D& pose);
+  // Reversing out of a blocked spot, guarded; turning on the spot if that is blocked too.
+  Command backOff(const mrpt::poses::CPose2D& pose);
   void finish(const std::string& reason);
   // Cells the robot at `pose` has in view within looked_at_range_m are never frontier again:
   // looking from there did not resolve them, and as the map changes the frontier may move by a

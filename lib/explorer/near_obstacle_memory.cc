@@ -25,7 +25,7 @@ void NearObstacleMemory::update(const std::vector<mrpt::math::TPoint2D>& sensed,
 
   for (auto it = cells_.begin(); it != cells_.end();) {
     double x = 0.0, y = 0.0;
-    pose.inverseComposePoint(it->second.x, it->second.y, x, y);
+    pose.inverseComposePoint(it->second.point.x, it->second.point.y, x, y);
     const double range = std::hypot(x, y);
     bool seen_past = false;
     if (range >= options_.judge_beyond_m && range <= options_.remember_within_m) {
@@ -48,29 +48,48 @@ void NearObstacleMemory::update(const std::vector<mrpt::math::TPoint2D>& sensed,
     double x = 0.0, y = 0.0;
     pose.composePoint(point.x, point.y, x, y);
     if (!confirmed(x, y)) continue;
-    cells_[{std::lround(x / options_.cell_m), std::lround(y / options_.cell_m)}] = mrpt::math::TPoint2D(x, y);
+    const mrpt::math::TPoint2D view(pose.x(), pose.y());
+    const auto [it, inserted] = cells_.try_emplace({std::lround(x / options_.cell_m), std::lround(y / options_.cell_m)},
+                                                   Cell{mrpt::math::TPoint2D(x, y), view, false});
+    if (inserted) continue;
+    Cell& cell = it->second;
+    cell.point = mrpt::math::TPoint2D(x, y);
+    if (std::hypot(view.x - cell.first_view.x, view.y - cell.first_view.y) >= options_.distinct_views_m) {
+      cell.remembered = true;
+    }
   }
 }
 
 void NearObstacleMemory::remember(const std::vector<mrpt::math::TPoint2D>& points) {
   for (const mrpt::math::TPoint2D& point : points) {
-    cells_[{std::lround(point.x / options_.cell_m), std::lround(point.y / options_.cell_m)}] = point;
+    cells_[{std::lround(point.x / options_.cell_m), std::lround(point.y / options_.cell_m)}] = Cell{point, point, true};
   }
 }
 
 size_t NearObstacleMemory::forgetUnconfirmed(const std::function<bool(double x, double y)>& confirmed) {
-  const size_t before = cells_.size();
+  size_t forgotten = 0;
   for (auto it = cells_.begin(); it != cells_.end();) {
-    it = confirmed(it->second.x, it->second.y) ? std::next(it) : cells_.erase(it);
+    if (confirmed(it->second.point.x, it->second.point.y)) {
+      ++it;
+      continue;
+    }
+    forgotten += it->second.remembered ? 1 : 0;
+    it = cells_.erase(it);
   }
-  return before - cells_.size();
+  return forgotten;
 }
 
 std::vector<mrpt::math::TPoint2D> NearObstacleMemory::points() const {
   std::vector<mrpt::math::TPoint2D> points;
-  points.reserve(cells_.size());
-  for (const auto& cell : cells_) points.push_back(cell.second);
+  for (const auto& cell : cells_) {
+    if (cell.second.remembered) points.push_back(cell.second.point);
+  }
   return points;
+}
+
+size_t NearObstacleMemory::size() const {
+  return static_cast<size_t>(
+      std::count_if(cells_.begin(), cells_.end(), [](const auto& cell) { return cell.second.remembered; }));
 }
 
 }  // namespace stereonav

@@ -22,6 +22,10 @@ struct NearObstacleMemoryOptions {
   double see_through_margin_m = 0.3;
   double bearing_window_rad = 0.035;  // 2 degrees: the camera sits ahead of the robot's centre
   double cell_m = 0.05;               // points are kept one per cell of this size
+  // A point is remembered once scans from two robot positions this far apart have shown it where
+  // the map confirms an obstacle: standing still, the same floor seen a little too near piles up
+  // OCC evidence in the same cells.
+  double distinct_views_m = 0.3;
 };
 
 // What the stereo head has seen up close, kept until it is seen to be gone. The paper's linear
@@ -30,9 +34,9 @@ struct NearObstacleMemoryOptions {
 // from up close and that far views see under (section 6.1): in the office runs the robot drove
 // into chairs the map had lost. Up close the cameras do see such things, so the explorer keeps
 // them until a later view from nearby sees past them: a moving obstacle that has left is
-// forgotten, a chair is not. Only points the map confirms are kept (its cell occupied: the
-// update rule wants repeated OCC evidence), so that a single noisy reading (the floor seen a
-// few centimetres high) is not an obstacle for ever.
+// forgotten, a chair is not. Only points the map confirms, seen from two places, are kept (the
+// update rule wants repeated OCC evidence), so that noisy readings (the floor seen a few
+// centimetres high) are not obstacles for ever.
 class NearObstacleMemory {
  public:
   explicit NearObstacleMemory(const NearObstacleMemoryOptions& options) : options_(options) {}
@@ -50,11 +54,17 @@ class NearObstacleMemory {
 
   // The remembered points, map frame.
   std::vector<mrpt::math::TPoint2D> points() const;
-  size_t size() const { return cells_.size(); }
+  size_t size() const;
 
  private:
+  struct Cell {
+    mrpt::math::TPoint2D point;       // the newest sighting
+    mrpt::math::TPoint2D first_view;  // where the robot stood when it first saw it
+    bool remembered = false;
+  };
+
   NearObstacleMemoryOptions options_;
-  std::map<std::pair<long, long>, mrpt::math::TPoint2D> cells_;
+  std::map<std::pair<long, long>, Cell> cells_;  // remembered points and candidates
 };
 
 }  // namespace stereonav

@@ -76,7 +76,7 @@ TEST(ExplorationRunTest, ExploresASmallRoomWithoutCollisionAndTheRecordedRunRepl
   EXPECT_NEAR(static_cast<double>(report.frames), report.sim_time_s * config.simulator.simulation.frame_rate_hz, 1.0);
 
   for (const char* suffix : {".gridmap", ".png", ".yaml", ".pgm", ".3Dscene", ".path.txt", ".truth.txt",
-                             ".navlog.csv", ".reactivenavlog", ".path.png", ".stats.json"}) {
+                             ".navlog.csv", ".reactivenavlog", ".path.png", ".plan.png", ".stats.json"}) {
     EXPECT_TRUE(std::filesystem::exists(job.output_prefix + suffix)) << suffix;
   }
   EXPECT_NE(readFile(job.output_prefix + ".stats.json").find("\"collisions\": 0"), std::string::npos);

@@ -21,25 +21,52 @@ std::vector<mrpt::math::TPoint2D> wallScan(double distance, double hidden_from_y
   return scan;
 }
 
-TEST(NearObstacleMemory, KeepsPointsSeenUpCloseInTheMapFrameOnly) {
+// Map points as a robot at `pose` sees them.
+std::vector<mrpt::math::TPoint2D> seenFrom(const mrpt::poses::CPose2D& pose, const std::vector<mrpt::math::TPoint2D>& map_points) {
+  std::vector<mrpt::math::TPoint2D> scan;
+  for (const auto& point : map_points) scan.push_back(pose.inverseComposePoint(point));
+  return scan;
+}
+
+// A 0.4 m wide obstacle face at x = 1.5 (map frame), points 5 cm apart.
+std::vector<mrpt::math::TPoint2D> faceAt(double x) {
+  std::vector<mrpt::math::TPoint2D> face;
+  for (int i = -4; i <= 4; ++i) face.emplace_back(x, 0.05 * i);
+  return face;
+}
+
+// The robot sees `map_points` from (0, 0) and from (0.3, 0), facing +x: two places.
+void seeFromTwoPlaces(NearObstacleMemory& memory, const std::vector<mrpt::math::TPoint2D>& map_points) {
+  for (const double x : {0.0, 0.3}) {
+    const mrpt::poses::CPose2D pose(x, 0.0, 0.0);
+    memory.update(seenFrom(pose, map_points), pose, everywhere);
+  }
+}
+
+TEST(NearObstacleMemory, KeepsPointsSeenUpCloseFromTwoPlacesInTheMapFrame) {
   NearObstacleMemory memory{NearObstacleMemoryOptions{}};
   // A chair seat 1.5 m ahead of a robot at (2, 3) facing +y; a wall 4 m ahead is too far to keep.
-  std::vector<mrpt::math::TPoint2D> scan = wallScan(4.0, -0.2, 0.2);
-  for (double y = -0.2; y <= 0.2 + 1e-9; y += 0.05) scan.emplace_back(1.5, y);
-  memory.update(scan, mrpt::poses::CPose2D(2.0, 3.0, M_PI / 2), everywhere);
+  std::vector<mrpt::math::TPoint2D> map_points;
+  for (int i = -4; i <= 4; ++i) map_points.emplace_back(2.0 + 0.05 * i, 4.5);
+  for (int i = -20; i <= 20; ++i) map_points.emplace_back(2.0 + 0.05 * i, 7.0);
+  const mrpt::poses::CPose2D first(2.0, 3.0, M_PI / 2), turned(2.0, 3.0, M_PI / 2 + 0.2),
+      second(2.0, 3.4, M_PI / 2);
+  memory.update(seenFrom(first, map_points), first, everywhere);
+  // Turning on the spot the robot sees the same noise again and again: one place is not enough.
+  memory.update(seenFrom(turned, map_points), turned, everywhere);
+  EXPECT_EQ(memory.size(), 0u);
+  memory.update(seenFrom(second, map_points), second, everywhere);
   const auto points = memory.points();
   ASSERT_EQ(points.size(), 9u);
   for (const auto& point : points) {
-    EXPECT_NEAR(point.y, 4.5, 1e-9);  // 1.5 m ahead of y = 3
+    EXPECT_NEAR(point.y, 4.5, 1e-9);
     EXPECT_NEAR(point.x, 2.0, 0.2 + 1e-9);
   }
 }
 
 TEST(NearObstacleMemory, FarViewsThatSeeUnderItDoNotForgetIt) {
   NearObstacleMemory memory{NearObstacleMemoryOptions{}};
-  std::vector<mrpt::math::TPoint2D> close_view;
-  for (double y = -0.2; y <= 0.2 + 1e-9; y += 0.05) close_view.emplace_back(1.2, y);
-  memory.update(close_view, mrpt::poses::CPose2D(0.0, 0.0, 0.0), everywhere);
+  seeFromTwoPlaces(memory, faceAt(1.2));
   ASSERT_EQ(memory.size(), 9u);
   // From 3 m back the scan sees the wall behind (at x = 4) through the seat: beyond the range
   // in which a view may judge (2 m), so the seat is kept.
@@ -53,9 +80,7 @@ TEST(NearObstacleMemory, FarViewsThatSeeUnderItDoNotForgetIt) {
 
 TEST(NearObstacleMemory, AViewFromNearbyThatSeesPastItForgetsIt) {
   NearObstacleMemory memory{NearObstacleMemoryOptions{}};
-  std::vector<mrpt::math::TPoint2D> person;
-  for (double y = -0.2; y <= 0.2 + 1e-9; y += 0.05) person.emplace_back(1.5, y);
-  memory.update(person, mrpt::poses::CPose2D(0.0, 0.0, 0.0), everywhere);
+  seeFromTwoPlaces(memory, faceAt(1.5));
   ASSERT_EQ(memory.size(), 9u);
   // The person has walked on: from where the robot stood, the scan sees the wall at 4 m.
   memory.update(wallScan(4.0), mrpt::poses::CPose2D(0.0, 0.0, 0.0), everywhere);
@@ -64,8 +89,8 @@ TEST(NearObstacleMemory, AViewFromNearbyThatSeesPastItForgetsIt) {
 
 TEST(NearObstacleMemory, ABearingTheScanSawNothingAlongIsNoEvidenceOfAbsence) {
   NearObstacleMemory memory{NearObstacleMemoryOptions{}};
-  std::vector<mrpt::math::TPoint2D> post{{1.5, 0.0}};
-  memory.update(post, mrpt::poses::CPose2D(0.0, 0.0, 0.0), everywhere);
+  seeFromTwoPlaces(memory, {{1.5, 0.0}});
+  ASSERT_EQ(memory.size(), 1u);
   // The next scan matched nothing in the middle of the view (textureless), the wall elsewhere.
   memory.update(wallScan(4.0, -0.5, 0.5), mrpt::poses::CPose2D(0.0, 0.0, 0.0), everywhere);
   EXPECT_EQ(memory.size(), 1u);
@@ -73,15 +98,18 @@ TEST(NearObstacleMemory, ABearingTheScanSawNothingAlongIsNoEvidenceOfAbsence) {
 
 TEST(NearObstacleMemory, KeepsOnlyWhatTheMapConfirms) {
   NearObstacleMemory memory{NearObstacleMemoryOptions{}};
-  // A robot at the origin facing +x; the map holds an obstacle only beyond x = 1.4.
-  std::vector<mrpt::math::TPoint2D> scan{{1.0, 0.0}, {1.2, 0.5}, {1.5, -0.3}, {1.8, 0.2}};
-  memory.update(scan, mrpt::poses::CPose2D(0.0, 0.0, 0.0), [](double x, double) { return x > 1.4; });
+  // The map holds an obstacle only beyond x = 1.4.
+  const std::vector<mrpt::math::TPoint2D> map_points{{1.0, 0.0}, {1.2, 0.5}, {1.5, -0.3}, {1.8, 0.2}};
+  for (const double x : {0.0, 0.3}) {
+    const mrpt::poses::CPose2D pose(x, 0.0, 0.0);
+    memory.update(seenFrom(pose, map_points), pose, [](double px, double) { return px > 1.4; });
+  }
   const auto points = memory.points();
   ASSERT_EQ(points.size(), 2u);
   for (const auto& point : points) EXPECT_GT(point.x, 1.4);
 }
 
-TEST(NearObstacleMemory, WhatStoppedTheRobotIsRememberedUntilSeenPast) {
+TEST(NearObstacleMemory, WhatStoppedTheRobotIsRememberedAtOnceUntilSeenPast) {
   NearObstacleMemory memory{NearObstacleMemoryOptions{}};
   memory.remember({{1.5, 0.0}, {1.52, 0.0}, {1.5, 0.1}});
   EXPECT_EQ(memory.size(), 2u);  // one point per 5 cm cell
