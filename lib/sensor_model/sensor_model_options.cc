@@ -7,6 +7,9 @@ SensorModelOptions loadSensorModelOptions(IniSection& section) {
   options.max_range_m = section.getDouble("max_range_m", options.max_range_m);
   options.clear_invalid_columns_to_m =
       section.getDouble("clear_invalid_columns_to_m", options.clear_invalid_columns_to_m);
+  options.disparity_uncertainty_px =
+      section.getPositive("disparity_uncertainty_px", options.disparity_uncertainty_px);
+  options.clear_whole_cells = section.getBool("clear_whole_cells", options.clear_whole_cells);
   const auto fail = [&](const std::string& key, const std::string& why) {
     throw ConfigError("[" + section.name() + "] " + key + ": " + why);
   };

@@ -48,6 +48,56 @@ EdgeLine rayLine(const FloorAxes& axes, const CellPoint& line_of_sight) {
 
 mrpt::math::TPoint2D toPoint(const CellPoint& p) { return {p.u, p.v}; }
 
+// The spans of `row` from `from` on in a buffer sorted by row: [from, returned end).
+const CellSpan* rowEnd(const CellSpan* from, const CellSpan* end, int row) {
+  while (from != end && from->row == row) ++from;
+  return from;
+}
+
+// Calls emit(begin, end) for every overlap of the column ranges of two sorted lists of disjoint
+// spans of one row, in column order; `b_end_shift` is added to the end of every b span.
+template <typename Emit>
+void forEachOverlap(const CellSpan* a, const CellSpan* a_end, const CellSpan* b,
+                    const CellSpan* b_end, int b_end_shift, Emit emit) {
+  while (a != a_end && b != b_end) {
+    const int begin = std::max(a->col_begin, b->col_begin);
+    const int end = std::min(a->col_end, b->col_end + b_end_shift);
+    if (end > begin) emit(begin, end);
+    if (a->col_end < b->col_end + b_end_shift) {
+      ++a;
+    } else {
+      ++b;
+    }
+  }
+}
+
+// The cells of `centres` whose four corners are in `corners` (both as appendPolygonSpans
+// leaves them: sorted by row, then column). Cell (i, j) needs corners i and i + 1 of corner
+// rows j and j + 1.
+void appendWholeCells(const CellSpanBuffer& centres, const CellSpanBuffer& corners,
+                      std::vector<CellSpan>& both_corner_rows, CellSpanBuffer& out) {
+  const CellSpan* corner = corners.begin();
+  for (const CellSpan* centre = centres.begin(); centre != centres.end();) {
+    const int row = centre->row;
+    const CellSpan* centre_end = rowEnd(centre, centres.end(), row);
+    while (corner != corners.end() && corner->row < row) ++corner;
+    const CellSpan* lower_end = rowEnd(corner, corners.end(), row);
+    const CellSpan* upper_end = rowEnd(lower_end, corners.end(), row + 1);
+    both_corner_rows.clear();
+    forEachOverlap(corner, lower_end, lower_end, upper_end, 0, [&](int begin, int end) {
+      both_corner_rows.push_back({row, begin, end});
+    });
+    forEachOverlap(centre, centre_end, both_corner_rows.data(),
+                   both_corner_rows.data() + both_corner_rows.size(), -1,
+                   [&](int begin, int end) {
+                     CellSpan* span = out.room(1);
+                     *span = {row, begin, end};
+                     out.commit(span + 1);
+                   });
+    centre = centre_end;
+  }
+}
+
 const GridFrame kMetricFrame{0.0, 0.0, 1.0};
 
 }  // namespace
@@ -91,13 +141,14 @@ ColumnReading StereoSensorModel::reading(int column, float disparity,
   reading.column = column;
   reading.disparity = disparity;
   if (isValidDisparity(disparity)) {
-    reading.near_depth_m = camera.depthForDisparity(disparity + 0.5);
-    // Equation 1 with d - 0.5 <= 0 puts the obstacle out to infinity, and just above 0.5
+    const double uncertainty = options_.disparity_uncertainty_px;
+    reading.near_depth_m = camera.depthForDisparity(disparity + uncertainty);
+    // Equation 1 with d - u <= 0 puts the obstacle out to infinity, and just above it
     // kilometres away: the region stops at max_range_m.
-    reading.far_depth_m =
-        disparity > 0.5f
-            ? std::min(camera.depthForDisparity(disparity - 0.5), options_.max_range_m)
-            : options_.max_range_m;
+    reading.far_depth_m = disparity > uncertainty
+                              ? std::min(camera.depthForDisparity(disparity - uncertainty),
+                                         options_.max_range_m)
+                              : options_.max_range_m;
     reading.far_depth_m = std::max(reading.far_depth_m, reading.near_depth_m);
   } else {
     reading.near_depth_m = reading.far_depth_m = options_.clear_invalid_columns_to_m;
@@ -258,7 +309,27 @@ void StereoSensorModel::rasterize(const std::vector<ColumnReading>& readings,
     ScanEdge::appendTo(clear, previous_near_left, axes.centre, previous_left_ray);
   }
   raster.clear_begin = raster.spans.size();
-  appendPolygonSpans(clear, raster.spans);
+  if (!options_.clear_whole_cells) {
+    appendPolygonSpans(clear, raster.spans);
+    return;
+  }
+  // Moved by half a cell, the outline has the grid's cell corners at its cell centres: corner
+  // (i, j), the lower left one of cell (i, j), comes out as cell (i, j).
+  std::vector<ScanEdge>& corner_edges = raster.corner_edges;
+  corner_edges = clear;
+  for (ScanEdge& edge : corner_edges) {
+    edge.line.u0 += 0.5;
+    edge.line.v0 += 0.5;
+    edge.v_low += 0.5;
+    edge.v_high += 0.5;
+    edge.u_low += 0.5;
+    edge.u_high += 0.5;
+  }
+  raster.centre_spans.clear();
+  raster.corner_spans.clear();
+  appendPolygonSpans(clear, raster.centre_spans);
+  appendPolygonSpans(corner_edges, raster.corner_spans);
+  appendWholeCells(raster.centre_spans, raster.corner_spans, raster.row_scratch, raster.spans);
 }
 
 }  // namespace stereonav
