@@ -78,7 +78,7 @@ void CStereoOccupancyGridMap::getVisualizationInto(mrpt::opengl::CSetOfObjects& 
   toMrptOccupancyGrid(grid_).getVisualizationInto(o);
 }
 
-// Version 1 adds the sensor model's disparity_uncertainty_px and clear_whole_cells.
+// Version 1 adds the sensor model's disparity_uncertainty_px and keep_obstacle_borders.
 uint8_t CStereoOccupancyGridMap::serializeGetVersion() const { return 1; }
 
 void CStereoOccupancyGridMap::serializeTo(mrpt::serialization::CArchive& out) const {
@@ -90,7 +90,7 @@ void CStereoOccupancyGridMap::serializeTo(mrpt::serialization::CArchive& out) co
   out.WriteAs<int32_t>(update.scale.free_below).WriteAs<int32_t>(update.scale.occupied_above);
   out.WriteAs<int32_t>(update.update_step) << update.accuracy_preservation;
   out << options_.sensor_model.max_range_m << options_.sensor_model.clear_invalid_columns_to_m
-      << options_.sensor_model.disparity_uncertainty_px << options_.sensor_model.clear_whole_cells;
+      << options_.sensor_model.disparity_uncertainty_px << options_.sensor_model.keep_obstacle_borders;
   const GridFrame& frame = grid_.frame();
   out << frame.origin_x << frame.origin_y << frame.resolution;
   out.WriteAs<int32_t>(grid_.width()).WriteAs<int32_t>(grid_.height());
@@ -116,7 +116,7 @@ void CStereoOccupancyGridMap::serializeFrom(mrpt::serialization::CArchive& in, u
       in >> update.accuracy_preservation;
       in >> options.sensor_model.max_range_m >> options.sensor_model.clear_invalid_columns_to_m;
       if (version >= 1) {
-        in >> options.sensor_model.disparity_uncertainty_px >> options.sensor_model.clear_whole_cells;
+        in >> options.sensor_model.disparity_uncertainty_px >> options.sensor_model.keep_obstacle_borders;
       }
       GridFrame frame;
       in >> frame.origin_x >> frame.origin_y >> frame.resolution;
@@ -165,7 +165,7 @@ void CStereoOccupancyGridMap::TMapDefinition::dumpToTextStream_map_specific(
       << "max_range_m=" << options.sensor_model.max_range_m
       << " clear_invalid_columns_to_m=" << options.sensor_model.clear_invalid_columns_to_m
       << " disparity_uncertainty_px=" << options.sensor_model.disparity_uncertainty_px
-      << " clear_whole_cells=" << options.sensor_model.clear_whole_cells << "\n";
+      << " keep_obstacle_borders=" << options.sensor_model.keep_obstacle_borders << "\n";
 }
 
 mrpt::maps::CMetricMap* CStereoOccupancyGridMap::internal_CreateFromMapDefinition(

@@ -9,7 +9,8 @@ SensorModelOptions loadSensorModelOptions(IniSection& section) {
       section.getDouble("clear_invalid_columns_to_m", options.clear_invalid_columns_to_m);
   options.disparity_uncertainty_px =
       section.getPositive("disparity_uncertainty_px", options.disparity_uncertainty_px);
-  options.clear_whole_cells = section.getBool("clear_whole_cells", options.clear_whole_cells);
+  options.keep_obstacle_borders =
+      section.getBool("keep_obstacle_borders", options.keep_obstacle_borders);
   const auto fail = [&](const std::string& key, const std::string& why) {
     throw ConfigError("[" + section.name() + "] " + key + ": " + why);
   };

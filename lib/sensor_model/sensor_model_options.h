@@ -20,16 +20,16 @@ struct SensorModelOptions {
   // whole-pixel disparities; sub-pixel disparities are better than that (the paper cites
   // standard deviations well below a pixel, section 3.2).
   double disparity_uncertainty_px = 0.5;
-  // false: a cell is cleared when its centre lies in a CLEAR region, as OCC cells are taken.
-  // true: only when its centre and its four corners do, i.e. when the scan saw the whole cell
-  // clear. A cell with an obstacle in any part of it is an obstacle cell for a planner (and for
-  // the simulator's true maps); the centre rule clears cells that an edge-on chair or table leg
-  // reaches into by a few centimetres, seen past by the neighbouring column.
-  bool clear_whole_cells = false;
+  // true: a scan does not clear the cells that touch one of its own OCC regions (a corner of
+  // the cell lies in it). Cells are taken by their centres, and an obstacle is known only to
+  // within its region: a column that looks past an obstacle seen edge-on (a chair's side) would
+  // clear the cell the obstacle reaches into by a centimetre, an obstacle cell for a planner
+  // (and for the simulator's true maps). false: every cell whose centre lies in CLEAR.
+  bool keep_obstacle_borders = false;
 };
 
 // Keys: max_range_m, clear_invalid_columns_to_m (0 = off), disparity_uncertainty_px,
-// clear_whole_cells. Throws ConfigError on bad values.
+// keep_obstacle_borders. Throws ConfigError on bad values.
 SensorModelOptions loadSensorModelOptions(IniSection& section);
 
 }  // namespace stereonav

@@ -48,53 +48,36 @@ EdgeLine rayLine(const FloorAxes& axes, const CellPoint& line_of_sight) {
 
 mrpt::math::TPoint2D toPoint(const CellPoint& p) { return {p.u, p.v}; }
 
-// The spans of `row` from `from` on in a buffer sorted by row: [from, returned end).
-const CellSpan* rowEnd(const CellSpan* from, const CellSpan* end, int row) {
-  while (from != end && from->row == row) ++from;
-  return from;
-}
-
-// Calls emit(begin, end) for every overlap of the column ranges of two sorted lists of disjoint
-// spans of one row, in column order; `b_end_shift` is added to the end of every b span.
-template <typename Emit>
-void forEachOverlap(const CellSpan* a, const CellSpan* a_end, const CellSpan* b,
-                    const CellSpan* b_end, int b_end_shift, Emit emit) {
-  while (a != a_end && b != b_end) {
-    const int begin = std::max(a->col_begin, b->col_begin);
-    const int end = std::min(a->col_end, b->col_end + b_end_shift);
-    if (end > begin) emit(begin, end);
-    if (a->col_end < b->col_end + b_end_shift) {
-      ++a;
-    } else {
-      ++b;
-    }
+// The cells a corner span of an OCC region touches: corner (i, j) is the lower-left corner of
+// cell (i, j), so corners [begin, end) of corner row j are corners of the cells [begin - 1, end)
+// of rows j - 1 and j.
+void appendTouchedCells(const CellSpanBuffer& corners, std::vector<CellSpan>& cells) {
+  for (const CellSpan& corner : corners) {
+    cells.push_back({corner.row - 1, corner.col_begin - 1, corner.col_end});
+    cells.push_back({corner.row, corner.col_begin - 1, corner.col_end});
   }
 }
 
-// The cells of `centres` whose four corners are in `corners` (both as appendPolygonSpans
-// leaves them: sorted by row, then column). Cell (i, j) needs corners i and i + 1 of corner
-// rows j and j + 1.
-void appendWholeCells(const CellSpanBuffer& centres, const CellSpanBuffer& corners,
-                      std::vector<CellSpan>& both_corner_rows, CellSpanBuffer& out) {
-  const CellSpan* corner = corners.begin();
-  for (const CellSpan* centre = centres.begin(); centre != centres.end();) {
-    const int row = centre->row;
-    const CellSpan* centre_end = rowEnd(centre, centres.end(), row);
-    while (corner != corners.end() && corner->row < row) ++corner;
-    const CellSpan* lower_end = rowEnd(corner, corners.end(), row);
-    const CellSpan* upper_end = rowEnd(lower_end, corners.end(), row + 1);
-    both_corner_rows.clear();
-    forEachOverlap(corner, lower_end, lower_end, upper_end, 0, [&](int begin, int end) {
-      both_corner_rows.push_back({row, begin, end});
-    });
-    forEachOverlap(centre, centre_end, both_corner_rows.data(),
-                   both_corner_rows.data() + both_corner_rows.size(), -1,
-                   [&](int begin, int end) {
-                     CellSpan* span = out.room(1);
-                     *span = {row, begin, end};
-                     out.commit(span + 1);
-                   });
-    centre = centre_end;
+// `clear` (sorted by row, then column, as appendPolygonSpans leaves it) without the cells of
+// `kept` (sorted by row, then column begin; they may overlap), appended to `out`.
+void appendSpansWithout(const CellSpanBuffer& clear, const std::vector<CellSpan>& kept,
+                        CellSpanBuffer& out) {
+  const auto emit = [&](int row, int begin, int end) {
+    CellSpan* span = out.room(1);
+    *span = {row, begin, end};
+    out.commit(span + 1);
+  };
+  auto row_first = kept.begin();
+  for (const CellSpan& span : clear) {
+    while (row_first != kept.end() && row_first->row < span.row) ++row_first;
+    int from = span.col_begin;
+    for (auto k = row_first; k != kept.end() && k->row == span.row && from < span.col_end; ++k) {
+      if (k->col_end <= from) continue;
+      if (k->col_begin >= span.col_end) break;
+      if (k->col_begin > from) emit(span.row, from, k->col_begin);
+      from = std::max(from, k->col_end);
+    }
+    if (from < span.col_end) emit(span.row, from, span.col_end);
   }
 }
 
@@ -253,6 +236,7 @@ void StereoSensorModel::rasterize(const std::vector<ColumnReading>& readings,
   raster.readings.clear();
   raster.spans.clear();
   raster.clear_edges.clear();
+  raster.occupied_corners.clear();
   const FloorAxes axes = floorAxes(camera_floor_pose, frame);
   std::vector<ScanEdge>& clear = raster.clear_edges;
   // Walk the columns from image right to image left: counter-clockwise around the camera. The
@@ -301,6 +285,18 @@ void StereoSensorModel::rasterize(const std::vector<ColumnReading>& readings,
       occupied.vertices = {near_right, far_right, far_left, near_left};
       occupied.edges = {right_ray, EdgeLine::through(far_right, far_left), left_ray, near_edge};
       appendCellSpans(occupied, raster.spans);
+      if (options_.keep_obstacle_borders) {
+        // Moved by half a cell, the region has the grid's cell corners at its cell centres.
+        for (CellPoint& vertex : occupied.vertices) {
+          vertex.u += 0.5;
+          vertex.v += 0.5;
+        }
+        for (EdgeLine& edge : occupied.edges) {
+          edge.u0 += 0.5;
+          edge.v0 += 0.5;
+        }
+        appendCellSpans(occupied, raster.occupied_corners);
+      }
     }
     spans.occupied_end = static_cast<uint32_t>(raster.spans.size());
     raster.readings.push_back(spans);
@@ -309,27 +305,19 @@ void StereoSensorModel::rasterize(const std::vector<ColumnReading>& readings,
     ScanEdge::appendTo(clear, previous_near_left, axes.centre, previous_left_ray);
   }
   raster.clear_begin = raster.spans.size();
-  if (!options_.clear_whole_cells) {
+  if (!options_.keep_obstacle_borders) {
     appendPolygonSpans(clear, raster.spans);
     return;
   }
-  // Moved by half a cell, the outline has the grid's cell corners at its cell centres: corner
-  // (i, j), the lower left one of cell (i, j), comes out as cell (i, j).
-  std::vector<ScanEdge>& corner_edges = raster.corner_edges;
-  corner_edges = clear;
-  for (ScanEdge& edge : corner_edges) {
-    edge.line.u0 += 0.5;
-    edge.line.v0 += 0.5;
-    edge.v_low += 0.5;
-    edge.v_high += 0.5;
-    edge.u_low += 0.5;
-    edge.u_high += 0.5;
-  }
-  raster.centre_spans.clear();
-  raster.corner_spans.clear();
-  appendPolygonSpans(clear, raster.centre_spans);
-  appendPolygonSpans(corner_edges, raster.corner_spans);
-  appendWholeCells(raster.centre_spans, raster.corner_spans, raster.row_scratch, raster.spans);
+  raster.clear_cells.clear();
+  appendPolygonSpans(clear, raster.clear_cells);
+  raster.border_cells.clear();
+  appendTouchedCells(raster.occupied_corners, raster.border_cells);
+  std::sort(raster.border_cells.begin(), raster.border_cells.end(),
+            [](const CellSpan& a, const CellSpan& b) {
+              return a.row != b.row ? a.row < b.row : a.col_begin < b.col_begin;
+            });
+  appendSpansWithout(raster.clear_cells, raster.border_cells, raster.spans);
 }
 
 }  // namespace stereonav

@@ -111,14 +111,12 @@ struct ScanRaster {
   std::vector<ReadingSpans> readings;
   CellSpanBuffer spans;
   size_t clear_begin = 0;
-  // Scratch: the CLEAR outline; for SensorModelOptions::clear_whole_cells also the outline moved
-  // by half a cell, the cells with their centre in CLEAR, the corners in CLEAR, and the cells of
-  // one row with both their lower and upper corners in.
+  // Scratch: the CLEAR outline; for SensorModelOptions::keep_obstacle_borders also the cell
+  // corners inside OCC regions, the cells they touch, and the cells the outline covers.
   std::vector<ScanEdge> clear_edges;
-  std::vector<ScanEdge> corner_edges;
-  CellSpanBuffer centre_spans;
-  CellSpanBuffer corner_spans;
-  std::vector<CellSpan> row_scratch;
+  CellSpanBuffer occupied_corners;
+  std::vector<CellSpan> border_cells;
+  CellSpanBuffer clear_cells;
 };
 
 // The stereo sensor model of paper section 3.2: each column's disparity becomes a trapezoid

@@ -57,8 +57,9 @@ TEST_F(OfficeRunTest, ShippedConfigurationMapsTheOfficeWalls) {
   // Walls within one 10 cm cell (issue 5's targets: precision 0.90, recall 0.80, false free
   // 0.5%). What keeps precision there is the row-aware sensor model, the median of a column's
   // nearest surface and the sub-pixel region of uncertainty (see ini/office_run.ini); what
-  // keeps the cells beside the meeting room's chairs out of the free space, clearing whole
-  // cells only (the camera sees past and under their seats, paper section 6.1).
+  // keeps the cells at the meeting room's chairs out of the free space is that a scan leaves
+  // the cells touching its own obstacles alone (the camera sees past and under the seats,
+  // paper section 6.1).
   EXPECT_GE(score.precision(), 0.90);
   EXPECT_GE(score.recall(), 0.80);
   EXPECT_LE(score.falseFree(), 0.005);

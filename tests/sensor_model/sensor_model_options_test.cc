@@ -9,7 +9,7 @@ namespace {
 TEST(SensorModelOptionsTest, LoadsKeysAndRejectsBadValues) {
   mrpt::config::CConfigFileMemory ini(
       "[grid]\nmax_range_m = 12.5\nclear_invalid_columns_to_m = 3\n"
-      "disparity_uncertainty_px = 0.3\nclear_whole_cells = true\n"
+      "disparity_uncertainty_px = 0.3\nkeep_obstacle_borders = true\n"
       "[bad]\nmax_range_m = 0\n"
       "[bad_uncertainty]\ndisparity_uncertainty_px = 0\n");
   IniSection grid(ini, "grid");
@@ -17,7 +17,7 @@ TEST(SensorModelOptionsTest, LoadsKeysAndRejectsBadValues) {
   EXPECT_DOUBLE_EQ(options.max_range_m, 12.5);
   EXPECT_DOUBLE_EQ(options.clear_invalid_columns_to_m, 3.0);
   EXPECT_DOUBLE_EQ(options.disparity_uncertainty_px, 0.3);
-  EXPECT_TRUE(options.clear_whole_cells);
+  EXPECT_TRUE(options.keep_obstacle_borders);
   IniSection bad(ini, "bad");
   try {
     loadSensorModelOptions(bad);
@@ -39,7 +39,7 @@ TEST(SensorModelOptionsTest, DefaultsAreThePapers) {
   IniSection grid(ini, "grid");
   const SensorModelOptions options = loadSensorModelOptions(grid);
   EXPECT_DOUBLE_EQ(options.disparity_uncertainty_px, 0.5);  // equation 1
-  EXPECT_FALSE(options.clear_whole_cells);
+  EXPECT_FALSE(options.keep_obstacle_borders);
 }
 
 }  // namespace
