@@ -1,9 +1,12 @@
 #include "column_projection/column_projector.h"
 
 #include <algorithm>
+#include <functional>
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace stereonav {
 namespace {
@@ -39,7 +42,10 @@ DisparityInterval bodyVolumeInterval(double k, double mount_z, const ProjectionO
 
 }  // namespace
 
-ColumnProjector::ColumnProjector(const CameraRig& rig, const ProjectionOptions& options) {
+ColumnProjector::ColumnProjector(const CameraRig& rig, const ProjectionOptions& options)
+    : surface_band_px_(options.surface_band_px),
+      min_reading_disparity_(options.max_depth_m > 0.0 ? rig.disparityForDepth(options.max_depth_m)
+                                                       : 0.0) {
   const PinholeCamera& camera = rig.reference;
   lowest_.create(camera.height, camera.width);
   highest_.create(camera.height, camera.width);
@@ -51,11 +57,7 @@ ColumnProjector::ColumnProjector(const CameraRig& rig, const ProjectionOptions& 
       const double k = rig.baseline_m * (rotation(2, 0) * (x - camera.cx) +
                                          rotation(2, 1) * (y - camera.cy) +
                                          rotation(2, 2) * camera.focal_px);
-      DisparityInterval interval = bodyVolumeInterval(k, mount_z, options);
-      // Depth Z = f B / d: deeper than max_depth_m means a disparity below f B / max_depth_m.
-      if (options.max_depth_m > 0.0) {
-        interval.lowest = std::max(interval.lowest, camera.focal_px * rig.baseline_m / options.max_depth_m);
-      }
+      const DisparityInterval interval = bodyVolumeInterval(k, mount_z, options);
       lowest_(y, x) = static_cast<float>(interval.lowest);
       highest_(y, x) = static_cast<float>(interval.highest);
     }
@@ -87,8 +89,30 @@ DisparityScan ColumnProjector::project(const cv::Mat1f& disparity) const {
       best_row[x] = closer ? y : best_row[x];
     }
   }
+  if (surface_band_px_ > 0.0) {
+    std::vector<std::pair<float, int>> surface;  // disparity, row
+    surface.reserve(disparity.rows);
+    for (int x = 0; x < width; ++x) {
+      if (best_row[x] < 0) continue;
+      surface.clear();
+      const float band_floor = best[x] - static_cast<float>(surface_band_px_);
+      for (int y = 0; y < disparity.rows; ++y) {
+        const float d = disparity(y, x);
+        if (d >= band_floor && d >= lowest_(y, x) && d <= highest_(y, x)) surface.emplace_back(d, y);
+      }
+      // The median, the lower one of an even count.
+      const auto median = surface.begin() + surface.size() / 2;
+      std::nth_element(surface.begin(), median, surface.end(), std::greater<>());
+      best[x] = median->first;
+      best_row[x] = median->second;
+    }
+  }
+  const auto min_disparity = static_cast<float>(min_reading_disparity_);
   for (int x = 0; x < width; ++x) {
-    if (best_row[x] < 0) best[x] = kInvalidDisparity;
+    if (best_row[x] < 0 || best[x] < min_disparity) {
+      best[x] = kInvalidDisparity;
+      best_row[x] = -1;
+    }
   }
   return scan;
 }

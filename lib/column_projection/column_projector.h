@@ -9,7 +9,8 @@
 namespace stereonav {
 
 // Projects a disparity image onto the floor plane column by column (paper section 3.3, figure
-// 5c): per column, the largest valid disparity whose 3D point lies inside the robot's body volume.
+// 5c): per column, the largest valid disparity whose 3D point lies inside the robot's body volume,
+// or the median of the nearest surface's (ProjectionOptions::surface_band_px).
 //
 // A pixel (x, y) at disparity d is the camera-frame point (B/d) (x - cx, y - cy, f), so its height
 // on the robot is mount_z + k(x, y) / d with k fixed by the rig. The body volume is therefore one
@@ -28,6 +29,9 @@ class ColumnProjector {
   // at infinity).
   cv::Mat1f lowest_;
   cv::Mat1f highest_;
+  double surface_band_px_;
+  // Readings below this disparity are deeper than max_depth_m (0: no limit).
+  double min_reading_disparity_;
 };
 
 }  // namespace stereonav

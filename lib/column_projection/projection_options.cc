@@ -8,6 +8,7 @@ ProjectionOptions loadProjectionOptions(IniSection& section) {
   ProjectionOptions options;
   options.floor_clearance_m = section.getDouble("floor_clearance_m", options.floor_clearance_m);
   options.robot_height_m = section.getDouble("robot_height_m", options.robot_height_m);
+  options.surface_band_px = section.getNonNegative("surface_band_px", options.surface_band_px);
   options.max_depth_m = section.getDouble("max_depth_m", options.max_depth_m);
   options.scan_max_range_m = section.getDouble("scan_max_range_m", options.scan_max_range_m);
   const auto fail = [&](const std::string& key, const std::string& why) {

@@ -10,16 +10,23 @@ namespace stereonav {
 struct ProjectionOptions {
   double floor_clearance_m = 0.05;
   double robot_height_m = 1.0;
-  // Points deeper than this (depth Z along the optical axis, metres) are not readings: a
-  // reading's region of uncertainty grows as Z^2 (paper section 3.2, equation 1), and one far,
-  // deep region marks cells behind the obstacle that no later, closer view can clear.
-  // 0 = no limit.
+  // A column's reading: 0 = its largest disparity inside the body volume (the paper). > 0 = the
+  // median of its disparities within this many pixels of the largest: the pixels of the nearest
+  // surface, of which the largest is the noise extreme (the maximum of tens of noisy pixels
+  // reads the surface too close).
+  double surface_band_px = 0.0;
+  // A column whose reading is deeper than this (depth Z along the optical axis, metres) has no
+  // reading: its region of uncertainty grows as Z^2 (paper section 3.2, equation 1), and one
+  // far, deep region marks cells behind the obstacle that no later, closer view can clear. The
+  // limit applies to the reading, not pixel by pixel: of a surface just beyond it only the
+  // pixels that noise brings nearer would pass. 0 = no limit.
   double max_depth_m = 0.0;
   // The virtual laser scan's maxRange: obstacles farther than this are left out of it.
   double scan_max_range_m = 10.0;
 };
 
-// Section [projection]. Keys: floor_clearance_m, robot_height_m, max_depth_m, scan_max_range_m.
+// Section [projection]. Keys: floor_clearance_m, robot_height_m, surface_band_px, max_depth_m,
+// scan_max_range_m.
 // Throws ConfigError on bad values.
 ProjectionOptions loadProjectionOptions(IniSection& section);
 

@@ -78,7 +78,8 @@ void CStereoOccupancyGridMap::getVisualizationInto(mrpt::opengl::CSetOfObjects& 
   toMrptOccupancyGrid(grid_).getVisualizationInto(o);
 }
 
-uint8_t CStereoOccupancyGridMap::serializeGetVersion() const { return 0; }
+// Version 1 adds the sensor model's disparity_uncertainty_px and keep_obstacle_borders.
+uint8_t CStereoOccupancyGridMap::serializeGetVersion() const { return 1; }
 
 void CStereoOccupancyGridMap::serializeTo(mrpt::serialization::CArchive& out) const {
   const GridLimits& limits = options_.limits;
@@ -88,7 +89,8 @@ void CStereoOccupancyGridMap::serializeTo(mrpt::serialization::CArchive& out) co
   out.WriteAs<int32_t>(update.scale.g_min).WriteAs<int32_t>(update.scale.g_max);
   out.WriteAs<int32_t>(update.scale.free_below).WriteAs<int32_t>(update.scale.occupied_above);
   out.WriteAs<int32_t>(update.update_step) << update.accuracy_preservation;
-  out << options_.sensor_model.max_range_m << options_.sensor_model.clear_invalid_columns_to_m;
+  out << options_.sensor_model.max_range_m << options_.sensor_model.clear_invalid_columns_to_m
+      << options_.sensor_model.disparity_uncertainty_px << options_.sensor_model.keep_obstacle_borders;
   const GridFrame& frame = grid_.frame();
   out << frame.origin_x << frame.origin_y << frame.resolution;
   out.WriteAs<int32_t>(grid_.width()).WriteAs<int32_t>(grid_.height());
@@ -99,7 +101,8 @@ void CStereoOccupancyGridMap::serializeTo(mrpt::serialization::CArchive& out) co
 
 void CStereoOccupancyGridMap::serializeFrom(mrpt::serialization::CArchive& in, uint8_t version) {
   switch (version) {
-    case 0: {
+    case 0:
+    case 1: {
       StereoGridMapOptions options;
       GridLimits& limits = options.limits;
       GridUpdateOptions& update = options.update;
@@ -112,6 +115,9 @@ void CStereoOccupancyGridMap::serializeFrom(mrpt::serialization::CArchive& in, u
       update.update_step = in.ReadAs<int32_t>();
       in >> update.accuracy_preservation;
       in >> options.sensor_model.max_range_m >> options.sensor_model.clear_invalid_columns_to_m;
+      if (version >= 1) {
+        in >> options.sensor_model.disparity_uncertainty_px >> options.sensor_model.keep_obstacle_borders;
+      }
       GridFrame frame;
       in >> frame.origin_x >> frame.origin_y >> frame.resolution;
       const int width = in.ReadAs<int32_t>();
@@ -157,7 +163,9 @@ void CStereoOccupancyGridMap::TMapDefinition::dumpToTextStream_map_specific(
       << " free_below=" << u.scale.free_below << " occupied_above=" << u.scale.occupied_above
       << " accuracy_preservation=" << u.accuracy_preservation << "\n"
       << "max_range_m=" << options.sensor_model.max_range_m
-      << " clear_invalid_columns_to_m=" << options.sensor_model.clear_invalid_columns_to_m << "\n";
+      << " clear_invalid_columns_to_m=" << options.sensor_model.clear_invalid_columns_to_m
+      << " disparity_uncertainty_px=" << options.sensor_model.disparity_uncertainty_px
+      << " keep_obstacle_borders=" << options.sensor_model.keep_obstacle_borders << "\n";
 }
 
 mrpt::maps::CMetricMap* CStereoOccupancyGridMap::internal_CreateFromMapDefinition(

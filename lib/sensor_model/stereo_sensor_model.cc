@@ -49,6 +49,39 @@ EdgeLine rayLine(const FloorAxes& axes, const CellPoint& line_of_sight) {
 
 mrpt::math::TPoint2D toPoint(const CellPoint& p) { return {p.u, p.v}; }
 
+// The cells a corner span of an OCC region touches: corner (i, j) is the lower-left corner of
+// cell (i, j), so corners [begin, end) of corner row j are corners of the cells [begin - 1, end)
+// of rows j - 1 and j.
+void appendTouchedCells(const CellSpanBuffer& corners, std::vector<CellSpan>& cells) {
+  for (const CellSpan& corner : corners) {
+    cells.push_back({corner.row - 1, corner.col_begin - 1, corner.col_end});
+    cells.push_back({corner.row, corner.col_begin - 1, corner.col_end});
+  }
+}
+
+// `clear` (sorted by row, then column, as appendPolygonSpans leaves it) without the cells of
+// `kept` (sorted by row, then column begin; they may overlap), appended to `out`.
+void appendSpansWithout(const CellSpanBuffer& clear, const std::vector<CellSpan>& kept,
+                        CellSpanBuffer& out) {
+  const auto emit = [&](int row, int begin, int end) {
+    CellSpan* span = out.room(1);
+    *span = {row, begin, end};
+    out.commit(span + 1);
+  };
+  auto row_first = kept.begin();
+  for (const CellSpan& span : clear) {
+    while (row_first != kept.end() && row_first->row < span.row) ++row_first;
+    int from = span.col_begin;
+    for (auto k = row_first; k != kept.end() && k->row == span.row && from < span.col_end; ++k) {
+      if (k->col_end <= from) continue;
+      if (k->col_begin >= span.col_end) break;
+      if (k->col_begin > from) emit(span.row, from, k->col_begin);
+      from = std::max(from, k->col_end);
+    }
+    if (from < span.col_end) emit(span.row, from, span.col_end);
+  }
+}
+
 const GridFrame kMetricFrame{0.0, 0.0, 1.0};
 
 }  // namespace
@@ -92,13 +125,14 @@ ColumnReading StereoSensorModel::reading(int column, float disparity,
   reading.column = column;
   reading.disparity = disparity;
   if (isValidDisparity(disparity)) {
-    reading.near_depth_m = camera.depthForDisparity(disparity + 0.5);
-    // Equation 1 with d - 0.5 <= 0 puts the obstacle out to infinity, and just above 0.5
+    const double uncertainty = options_.disparity_uncertainty_px;
+    reading.near_depth_m = camera.depthForDisparity(disparity + uncertainty);
+    // Equation 1 with d - u <= 0 puts the obstacle out to infinity, and just above it
     // kilometres away: the region stops at max_range_m.
-    reading.far_depth_m =
-        disparity > 0.5f
-            ? std::min(camera.depthForDisparity(disparity - 0.5), options_.max_range_m)
-            : options_.max_range_m;
+    reading.far_depth_m = disparity > uncertainty
+                              ? std::min(camera.depthForDisparity(disparity - uncertainty),
+                                         options_.max_range_m)
+                              : options_.max_range_m;
     reading.far_depth_m = std::max(reading.far_depth_m, reading.near_depth_m);
   } else {
     reading.near_depth_m = reading.far_depth_m = options_.clear_invalid_columns_to_m;
@@ -219,6 +253,7 @@ void StereoSensorModel::rasterize(const std::vector<ColumnReading>& readings,
   raster.readings.clear();
   raster.spans.clear();
   raster.clear_edges.clear();
+  raster.occupied_corners.clear();
   const FloorAxes axes = floorAxes(camera_floor_pose, frame);
   std::vector<ScanEdge>& clear = raster.clear_edges;
   // Walk the columns from image right to image left: counter-clockwise around the camera. The
@@ -267,6 +302,18 @@ void StereoSensorModel::rasterize(const std::vector<ColumnReading>& readings,
       occupied.vertices = {near_right, far_right, far_left, near_left};
       occupied.edges = {right_ray, EdgeLine::through(far_right, far_left), left_ray, near_edge};
       appendCellSpans(occupied, raster.spans, window);
+      if (options_.keep_obstacle_borders) {
+        // Moved by half a cell, the region has the grid's cell corners at its cell centres.
+        for (CellPoint& vertex : occupied.vertices) {
+          vertex.u += 0.5;
+          vertex.v += 0.5;
+        }
+        for (EdgeLine& edge : occupied.edges) {
+          edge.u0 += 0.5;
+          edge.v0 += 0.5;
+        }
+        appendCellSpans(occupied, raster.occupied_corners);
+      }
     }
     spans.occupied_end = static_cast<uint32_t>(raster.spans.size());
     raster.readings.push_back(spans);
@@ -275,7 +322,19 @@ void StereoSensorModel::rasterize(const std::vector<ColumnReading>& readings,
     ScanEdge::appendTo(clear, previous_near_left, axes.centre, previous_left_ray);
   }
   raster.clear_begin = raster.spans.size();
-  appendPolygonSpans(clear, raster.spans, window);
+  if (!options_.keep_obstacle_borders) {
+    appendPolygonSpans(clear, raster.spans, window);
+    return;
+  }
+  raster.clear_cells.clear();
+  appendPolygonSpans(clear, raster.clear_cells, window);
+  raster.border_cells.clear();
+  appendTouchedCells(raster.occupied_corners, raster.border_cells);
+  std::sort(raster.border_cells.begin(), raster.border_cells.end(),
+            [](const CellSpan& a, const CellSpan& b) {
+              return a.row != b.row ? a.row < b.row : a.col_begin < b.col_begin;
+            });
+  appendSpansWithout(raster.clear_cells, raster.border_cells, raster.spans);
 }
 
 }  // namespace stereonav

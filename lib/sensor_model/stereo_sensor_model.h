@@ -43,8 +43,9 @@ struct HeadTilt {
 // through the row each reading was seen in (ColumnReading::floor_per_depth, edge slopes).
 mrpt::poses::CPose2D cameraFloorPose(const mrpt::poses::CPose3D& optical_pose_on_robot);
 
-// One column's reading (paper equation 1, figure 4): depths Z(d + 0.5) and Z(d - 0.5) along the
-// optical axis, and where they fall on the floor. The pixel at image row y and depth Z lies
+// One column's reading (paper equation 1, figure 4): depths Z(d + u) and Z(d - u) along the
+// optical axis (u = SensorModelOptions::disparity_uncertainty_px, 0.5 in the paper), and where
+// they fall on the floor. The pixel at image row y and depth Z lies
 // Z (cos t - v sin t) ahead of the camera's floor point (along its heading) for a head tilted
 // down by t, v = (y - cy) / f, and Z (x - cx) / f to the image right: so between the lines of
 // sight through the column's two pixel edges, CLEAR is forward distance [0, near) and OCC is
@@ -110,7 +111,12 @@ struct ScanRaster {
   std::vector<ReadingSpans> readings;
   CellSpanBuffer spans;
   size_t clear_begin = 0;
-  std::vector<ScanEdge> clear_edges;  // scratch
+  // Scratch: the CLEAR outline; for SensorModelOptions::keep_obstacle_borders also the cell
+  // corners inside OCC regions, the cells they touch, and the cells the outline covers.
+  std::vector<ScanEdge> clear_edges;
+  CellSpanBuffer occupied_corners;
+  std::vector<CellSpan> border_cells;
+  CellSpanBuffer clear_cells;
 };
 
 // The stereo sensor model of paper section 3.2: each column's disparity becomes a trapezoid

@@ -74,6 +74,53 @@ TEST(ColumnProjectorTest, PointsDeeperThanMaxDepthAreNoReadings) {
   EXPECT_EQ(scan.column_disparity[155], 8.0f);
 }
 
+// Column 100 of a level camera looking at a wall 2 m away (d = 5, fB = 10): ten rows inside the
+// body volume read the wall with noise, one of them far too near (6.5), and a floor pixel below
+// (row 100, d = 5.5: 0.5 - 50 * 10 / 5.5 / 100 = -0.41 m high) lies outside the volume.
+cv::Mat1f noisyWallColumn() {
+  cv::Mat1f disparity(101, 201, kInvalidDisparity);
+  const float wall[] = {5.0f, 5.2f, 4.9f, 5.15f, 6.5f, 5.05f, 4.8f, 5.3f, 5.1f, 4.95f};
+  for (int i = 0; i < 10; ++i) disparity(30 + i, 100) = wall[i];
+  disparity(100, 100) = 5.5f;
+  return disparity;
+}
+
+TEST(ColumnProjectorTest, SurfaceBandTakesTheMedianOfTheNearestSurface) {
+  const CameraRig rig = testRig(0, 0, 0, 0);
+  ProjectionOptions options = bodyVolume(0.95);
+  // The paper's reading: the largest disparity, the outlier.
+  DisparityScan scan = ColumnProjector(rig, options).project(noisyWallColumn());
+  EXPECT_EQ(scan.column_disparity[100], 6.5f);
+  EXPECT_EQ(scan.column_row[100], 34);
+  // Within 2 px of it: all ten wall pixels (not the floor pixel); sorted 6.5 5.3 5.2 5.15 5.1
+  // 5.05 5.0 4.95 4.9 4.8, the median (the lower middle one) is 5.05, row 35.
+  options.surface_band_px = 2.0;
+  scan = ColumnProjector(rig, options).project(noisyWallColumn());
+  EXPECT_EQ(scan.column_disparity[100], 5.05f);
+  EXPECT_EQ(scan.column_row[100], 35);
+  // Within 1 px only the outlier itself.
+  options.surface_band_px = 1.0;
+  scan = ColumnProjector(rig, options).project(noisyWallColumn());
+  EXPECT_EQ(scan.column_disparity[100], 6.5f);
+  EXPECT_FALSE(scan.valid(99));
+}
+
+TEST(ColumnProjectorTest, MaxDepthAppliesToTheColumnsReadingNotToItsPixels) {
+  // A surface around the 2 m limit (d = 5): its median 4.95 (2.02 m) is beyond it, although two
+  // of its pixels (5.05, 5.1) are nearer; the paper's largest disparity 5.1 is inside.
+  const CameraRig rig = testRig(0, 0, 0, 0);
+  cv::Mat1f disparity(101, 201, kInvalidDisparity);
+  const float surface[] = {4.8f, 5.05f, 4.95f, 5.1f, 4.9f};
+  for (int i = 0; i < 5; ++i) disparity(30 + i, 100) = surface[i];
+  ProjectionOptions options = bodyVolume(0.95);
+  options.max_depth_m = 2.0;
+  EXPECT_EQ(ColumnProjector(rig, options).project(disparity).column_disparity[100], 5.1f);
+  options.surface_band_px = 1.0;
+  const DisparityScan scan = ColumnProjector(rig, options).project(disparity);
+  EXPECT_FALSE(scan.valid(100));
+  EXPECT_EQ(scan.column_row[100], -1);
+}
+
 TEST(ColumnProjectorTest, ZeroDisparityIsNoObstacle) {
   // A level ray stays at the camera's height at any depth; at d = 0 it is infinitely far.
   const CameraRig rig = testRig(0, 0, 0, 0);

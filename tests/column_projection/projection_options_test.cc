@@ -8,12 +8,14 @@ namespace {
 
 TEST(ProjectionOptionsTest, LoadsEveryKey) {
   mrpt::config::CConfigFileMemory config(
-      "[projection]\nfloor_clearance_m = 0.1\nrobot_height_m = 1.4\nmax_depth_m = 3\nscan_max_range_m = 6\n");
+      "[projection]\nfloor_clearance_m = 0.1\nrobot_height_m = 1.4\nsurface_band_px = 1.5\n"
+      "max_depth_m = 3\nscan_max_range_m = 6\n");
   IniSection section(config, "projection");
   const ProjectionOptions options = loadProjectionOptions(section);
   section.rejectUnknownKeys();
   EXPECT_DOUBLE_EQ(options.floor_clearance_m, 0.1);
   EXPECT_DOUBLE_EQ(options.robot_height_m, 1.4);
+  EXPECT_DOUBLE_EQ(options.surface_band_px, 1.5);
   EXPECT_DOUBLE_EQ(options.max_depth_m, 3.0);
   EXPECT_DOUBLE_EQ(options.scan_max_range_m, 6.0);
 }
@@ -25,6 +27,20 @@ TEST(ProjectionOptionsTest, MaxDepthIsOffByDefaultAndNotNegative) {
   mrpt::config::CConfigFileMemory config("[projection]\nmax_depth_m = -1\n");
   IniSection section(config, "projection");
   EXPECT_THROW(loadProjectionOptions(section), ConfigError);
+}
+
+TEST(ProjectionOptionsTest, SurfaceBandIsOffByDefaultAndNotNegative) {
+  mrpt::config::CConfigFileMemory defaults("[projection]\n");
+  IniSection default_section(defaults, "projection");
+  EXPECT_EQ(loadProjectionOptions(default_section).surface_band_px, 0.0);
+  mrpt::config::CConfigFileMemory config("[projection]\nsurface_band_px = -0.5\n");
+  IniSection section(config, "projection");
+  try {
+    loadProjectionOptions(section);
+    FAIL() << "expected ConfigError";
+  } catch (const ConfigError& error) {
+    EXPECT_STREQ(error.what(), "[projection] surface_band_px: must not be negative");
+  }
 }
 
 TEST(ProjectionOptionsTest, RobotMustBeTallerThanTheFloorClearance) {

@@ -77,6 +77,8 @@ TEST(CStereoOccupancyGridMapTest, SerialisesWithItsOptionsAndBothLayers) {
   StereoGridMapOptions options = unitOptions();
   options.update.update_step = 30;
   options.sensor_model.max_range_m = 7.5;
+  options.sensor_model.disparity_uncertainty_px = 0.3;
+  options.sensor_model.keep_obstacle_borders = true;
   CStereoOccupancyGridMap map(options);
   map.insertObservation(*unitObservation(1.5f), pose3D(testing::robotAt(0, 0)));
 
@@ -89,6 +91,8 @@ TEST(CStereoOccupancyGridMapTest, SerialisesWithItsOptionsAndBothLayers) {
   EXPECT_FALSE(copy->isEmpty());
   EXPECT_EQ(copy->options().update.update_step, 30);
   EXPECT_EQ(copy->options().sensor_model.max_range_m, 7.5);
+  EXPECT_EQ(copy->options().sensor_model.disparity_uncertainty_px, 0.3);
+  EXPECT_TRUE(copy->options().sensor_model.keep_obstacle_borders);
   EXPECT_EQ(copy->grid().occupancyLayer(), map.grid().occupancyLayer());
   EXPECT_EQ(copy->grid().tagLayer(), map.grid().tagLayer());
   EXPECT_EQ(copy->grid().minX(), map.grid().minX());

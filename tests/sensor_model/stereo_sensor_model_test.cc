@@ -463,5 +463,70 @@ TEST(StereoSensorModelTest, TiltedScanWithJumpingRowsTilesWithoutOverlaps) {
   EXPECT_GT(occupied_cells, 1000u);
 }
 
+TEST(StereoSensorModelTest, SubPixelUncertaintyNarrowsTheRegions) {
+  // f = 100 px, fB = 10, d = 10, u = 0.25: depths 10/10.25 = 0.975610 and 10/9.75 = 1.025641.
+  const DisparityScanCamera cam = camera(100.0, 50.0, 0.1);
+  SensorModelOptions options;
+  options.disparity_uncertainty_px = 0.25;
+  const ColumnReading reading = StereoSensorModel(options).readingForDisparity(50, 10.0f, cam);
+  EXPECT_NEAR(reading.near_depth_m, 0.9756097561, 1e-9);
+  EXPECT_NEAR(reading.far_depth_m, 1.0256410256, 1e-9);
+  // At d <= u the far edge goes to max_range_m.
+  options.max_range_m = 30.0;
+  EXPECT_DOUBLE_EQ(StereoSensorModel(options).readingForDisparity(50, 0.25f, cam).far_depth_m, 30.0);
+}
+
+TEST(StereoSensorModelTest, KeepObstacleBordersLeavesCellsTouchingOccAlone) {
+  // The offset camera of the hand-geometry cases above, one column at d = 0.6 beside a nearer
+  // one at d = 1.5, turned by 10 degrees, on a 0.25 m grid: the CLEAR cells must be the centre
+  // rule's CLEAR cells less those with a corner inside one of the scan's OCC trapezoids
+  // (checked here against the trapezoids' corners); the OCC cells do not change.
+  const OffsetCase c;
+  DisparityScan scan;
+  scan.column_disparity = {0.6f, 1.5f};
+  SensorModelOptions options;
+  options.keep_obstacle_borders = true;
+  const StereoSensorModel keeping(options);
+  const StereoSensorModel centre{SensorModelOptions{}};
+  const mrpt::poses::CPose2D robot(0.1, 0.5, mrpt::DEG2RAD(10.0));
+  const GridFrame grid{-10.0, -10.0, 0.25};
+  const RasterCells kept = rasterCells(keeping, c.cam, scan, robot, grid);
+  const RasterCells all = rasterCells(centre, c.cam, scan, robot, grid);
+
+  std::vector<ColumnReading> readings;
+  keeping.readings(scan, c.cam, readings);
+  const mrpt::poses::CPose2D camera_pose = robot + cameraFloorPose(c.cam.pose_on_robot);
+  std::vector<std::vector<mrpt::math::TPoint2D>> trapezoids;
+  for (const ColumnReading& reading : readings) {
+    const RegionCorners r = keeping.corners(reading, camera_pose);
+    trapezoids.push_back({r.near_right, r.far_right, r.far_left, r.near_left});
+  }
+  const auto touchesOcc = [&](const std::pair<int, int>& cell) {
+    for (const double dx : {0.0, 1.0}) {
+      for (const double dy : {0.0, 1.0}) {
+        const double x = grid.origin_x + (cell.first + dx) * grid.resolution;
+        const double y = grid.origin_y + (cell.second + dy) * grid.resolution;
+        for (const auto& t : trapezoids) {
+          if (insideConvex(t, x, y)) return true;
+        }
+      }
+    }
+    return false;
+  };
+  Cells expected;
+  size_t left_alone = 0;
+  for (const auto& cell : all.clear) {
+    if (touchesOcc(cell)) {
+      ++left_alone;
+    } else {
+      expected.insert(cell);
+    }
+  }
+  EXPECT_EQ(kept.clear, expected);
+  EXPECT_GE(left_alone, 3u);  // the near column's border and the far one's front row
+  EXPECT_GE(expected.size(), 20u);
+  EXPECT_EQ(kept.occupied, all.occupied);
+}
+
 }  // namespace
 }  // namespace stereonav
