@@ -51,10 +51,11 @@ struct ExplorerOptions {
   double look_around_turn_rate = 1.0;  // rad/s
   // No progress towards any goal for this long: the target is dropped as unreachable.
   double stuck_timeout_s = 15.0;
-  // The reactive guard (free_travel.h): the robot brakes so as to stop with this much room
-  // between its body and the obstacles of the newest stereo scans (CRobot2NavInterface::
-  // senseObstacles), whatever the map says.
-  double guard_margin_m = 0.05;
+  // The reactive guard (free_travel.h): the robot brakes so that its body, widened by this
+  // margin, stops short of the obstacles of the newest stereo scans (CRobot2NavInterface::
+  // senseObstacles) and of the remembered near obstacles along the commanded arc, whatever the
+  // map says.
+  double guard_margin_m = 0.1;
   // Obstacle points the scans show within obstacle_memory_range_m are obstacles for the planner
   // and the guard until a later scan sees past them from at least obstacle_memory_blind_m away
   // (near_obstacle_memory.h): far views see under chair seats and table tops (paper section 6.1).

@@ -61,6 +61,13 @@ constexpr double kHoldingDepthM = 0.3;
 
 double clampAbs(double value, double limit) { return std::max(-limit, std::min(limit, value)); }
 
+NearObstacleMemoryOptions nearObstacleOptions(const ExplorerOptions& options) {
+  NearObstacleMemoryOptions memory;
+  memory.remember_within_m = options.obstacle_memory_range_m;
+  memory.judge_beyond_m = options.obstacle_memory_blind_m;
+  return memory;
+}
+
 mrpt::math::TPoint2D composed(const mrpt::poses::CPose2D& pose, const mrpt::math::TPoint2D& local) {
   mrpt::math::TPoint2D global;
   pose.composePoint(local, global);
@@ -80,13 +87,6 @@ const char* phaseName(ExplorerPhase phase) {
     case ExplorerPhase::kFinished: return "finished";
   }
   return "?";
-}
-
-NearObstacleMemoryOptions nearObstacleOptions(const ExplorerOptions& options) {
-  NearObstacleMemoryOptions memory;
-  memory.remember_within_m = options.obstacle_memory_range_m;
-  memory.judge_beyond_m = options.obstacle_memory_blind_m;
-  return memory;
 }
 
 FrontierExplorer::FrontierExplorer(const ExplorerOptions& options)
