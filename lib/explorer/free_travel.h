@@ -8,15 +8,16 @@ namespace stereonav {
 
 // How far the robot's disc (radius `radius_m`, centred on the robot frame's origin) can travel
 // along the arc that `speed_mps` and `turn_rate` describe, forwards or backwards, before it
-// touches one of `obstacles` (robot frame: x ahead, y to the left); `horizon_m` when nothing is
-// in the way that soon. Turning on the spot sweeps no new ground: horizon_m. A point already
-// under the disc stops it (0) if it lies on the side the robot is moving towards, and is ignored
-// if it lies behind.
+// comes within `margin_m` of one of `obstacles` (robot frame: x ahead, y to the left);
+// `horizon_m` when nothing is in the way that soon. Turning on the spot sweeps no new ground:
+// horizon_m. A point already within the margin is judged by the bare disc, so that the robot may
+// still pass beside it (a door jamb) or move away; a point already under the bare disc stops it
+// (0) if it lies on the side the robot is moving towards, and is ignored if it lies behind.
 //
 // The reactive layer under the planner: the explorer brakes for what the newest stereo scans
 // show, whatever the map says (a table top far views have cleared, paper section 6.1; a person
 // walking in, section 3.4).
-double freeTravel(const std::vector<mrpt::math::TPoint2D>& obstacles, double radius_m, double speed_mps,
-                  double turn_rate, double horizon_m);
+double freeTravel(const std::vector<mrpt::math::TPoint2D>& obstacles, double radius_m, double margin_m,
+                  double speed_mps, double turn_rate, double horizon_m);
 
 }  // namespace stereonav
