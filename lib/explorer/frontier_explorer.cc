@@ -32,6 +32,8 @@ constexpr double kVisitSpacingM = 0.1;
 // How far the robot searches for a traversable cell when the map has closed in on it.
 constexpr double kEscapeSearchM = 1.5;
 constexpr double kEscapeSpeed = 0.2;
+// Cells this close to an escape target that the robot could not drive to are not escape targets.
+constexpr double kFailedEscapeM = 0.3;
 // Commanded at least kBlockedCommand forward but moving slower than kBlockedSpeed for
 // kBlockedS: the robot is blocked (MRPT's "apparent collision"); it reverses for kBackOffS.
 constexpr double kBlockedCommand = 0.1;
@@ -126,8 +128,10 @@ void FrontierExplorer::replan() {
                                   }),
                    frontiers_.end());
 
-  field_ = std::make_unique<CostToGoField>(*grid_, planner_options_);
-  const double goal_radius = planner_options_.body_radius_m + options_.goal_distance_m;
+  CostToGoOptions planner = planner_options_;
+  if (squeezing_) planner.body_radius_m = options_.robot_radius_m;
+  field_ = std::make_unique<CostToGoField>(*grid_, planner);
+  const double goal_radius = planner.body_radius_m + options_.goal_distance_m;
   const int reach = static_cast<int>(std::ceil(goal_radius / grid_->resolution()));
   const double reach_sq = goal_radius * goal_radius / (grid_->resolution() * grid_->resolution());
   // Per cell the cheapest seed and its frontier: goals of overlapping frontiers are not repeated.
@@ -210,6 +214,9 @@ bool FrontierExplorer::controlStep(mrpt::nav::CRobot2NavInterface& robot) {
                                  at.y() + reach * std::sin(at.phi() + bearing));
         }
       }
+      // An escape the guard will not let the robot drive (what the scans show disagrees with the
+      // map) is not tried again from here: the next escape heads for another cell.
+      if (status_.phase == ExplorerPhase::kEscaping && escape_to_) failed_escapes_.push_back(*escape_to_);
       status_.phase = ExplorerPhase::kBackingOff;
       back_off_until_ = time_s + kBackOffS;
       blocked_since_ = -1.0;
@@ -270,15 +277,16 @@ FrontierExplorer::Command FrontierExplorer::guard(Command command, const mrpt::p
     for (const mrpt::math::TPoint2D& point : scan.second) add(point);
   }
   for (const mrpt::math::TPoint2D& point : near_obstacles_.points()) add(point);
-  const double radius = options_.robot_radius_m + options_.guard_margin_m;
-  const double free = freeTravel(local, radius, command.speed, command.turn_rate, kGuardHorizonM);
+  const double radius = options_.robot_radius_m, margin = options_.guard_margin_m;
+  const double free = freeTravel(local, radius, margin, command.speed, command.turn_rate, kGuardHorizonM);
   status_.free_travel_m = free;
   const double allowed = std::sqrt(2.0 * options_.braking_deceleration * std::max(0.0, free - kStopGapM));
   if (std::abs(command.speed) <= allowed) return command;
   if (allowed < kHeldSpeed) {
     std::vector<mrpt::math::TPoint2D> holding;
     for (const mrpt::math::TPoint2D& point : local) {
-      if (freeTravel({point}, radius, command.speed, command.turn_rate, kGuardHorizonM) <= free + kHoldingDepthM) {
+      const double travel = freeTravel({point}, radius, margin, command.speed, command.turn_rate, kGuardHorizonM);
+      if (travel <= free + kHoldingDepthM) {
         holding.push_back(composed(pose, point));
       }
     }
@@ -370,6 +378,7 @@ void FrontierExplorer::dropFrontier(size_t index, const mrpt::poses::CPose2D& po
     }
   }
   target_.reset();
+  squeezing_ = false;
   replan();
 }
 
@@ -409,14 +418,20 @@ FrontierExplorer::Command FrontierExplorer::decide(const mrpt::poses::CPose2D& p
           if (!grid_->contains(c, r) || seen(r, c) || std::abs(c - col) > reach || std::abs(r - row) > reach) continue;
           seen(r, c) = 1;
           if (grid_->cellClass(c, r) != NavigationGrid::kFree) continue;
-          if (field_->traversable(c, r)) {
-            escape_to_ = cv::Point2d(grid_->centreX(c), grid_->centreY(r));
+          const cv::Point2d centre(grid_->centreX(c), grid_->centreY(r));
+          const bool failed_before =
+              std::any_of(failed_escapes_.begin(), failed_escapes_.end(), [&](const cv::Point2d& failed) {
+                return std::hypot(failed.x - centre.x, failed.y - centre.y) < kFailedEscapeM;
+              });
+          if (field_->traversable(c, r) && !failed_before) {
+            escape_to_ = centre;
             break;
           }
           queue.emplace_back(c, r);
         }
       }
       if (!escape_to_) {
+        failed_escapes_.clear();
         if (!looked_around_here_) return lookAround(pose);
         finish("boxed in: no cell within " + std::to_string(kEscapeSearchM).substr(0, 3) +
                " m where the robot's body fits in known free space");
@@ -431,6 +446,7 @@ FrontierExplorer::Command FrontierExplorer::decide(const mrpt::poses::CPose2D& p
   }
   if (status_.phase == ExplorerPhase::kEscaping) status_.phase = ExplorerPhase::kTurning;
   escape_to_.reset();
+  failed_escapes_.clear();
 
   if (!field_->reachable(col, row)) {
     if (!looked_around_here_) return lookAround(pose);
@@ -448,6 +464,12 @@ FrontierExplorer::Command FrontierExplorer::decide(const mrpt::poses::CPose2D& p
       forgot_x_ = pose.x();
       forgot_y_ = pose.y();
       awaiting_map_ = true;
+    } else if (!squeezing_ && options_.safety_margin_m > 0.0) {
+      // Doors seen obliquely come out narrower than they are (their jambs' regions of
+      // uncertainty, paper section 3.2): try the gaps the bare body fits through; the guard
+      // still keeps it off what the scans show. Until the next frontier is reached.
+      squeezing_ = true;
+      replan();
     } else {
       size_t cells = 0;
       for (const Frontier& frontier : frontiers_) cells += frontier.cells.size();

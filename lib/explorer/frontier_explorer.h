@@ -134,6 +134,9 @@ class FrontierExplorer {
   double forgot_x_ = 0.0;
   double forgot_y_ = 0.0;
   bool awaiting_map_ = false;
+  // Planning with the bare body, without the safety margin, until the next frontier is reached
+  // (no frontier was reachable with it).
+  bool squeezing_ = false;
   double look_around_x_ = 0.0;  // where the last full look-around was
   double look_around_y_ = 0.0;
   // Progress watch: the lowest cost-to-go reached and when.
@@ -141,6 +144,8 @@ class FrontierExplorer {
   double best_cost_time_ = 0.0;
   double phase_start_time_ = 0.0;
   std::optional<cv::Point2d> escape_to_;
+  // Escape targets the robot was blocked on the way to, since it last stood where its body fits.
+  std::vector<cv::Point2d> failed_escapes_;
   // Blocked watch: since when the robot has been told to move forward without moving, and when
   // the current back-off ends.
   double blocked_since_ = -1.0;
