@@ -258,7 +258,16 @@ void FrontierExplorer::readSensedObstacles(mrpt::nav::CRobot2NavInterface& robot
 }
 
 FrontierExplorer::Command FrontierExplorer::backOff(const mrpt::poses::CPose2D& pose) {
-  const Command reverse = guard({kBackOffSpeed, 0.0}, pose);
+  // The cameras do not see behind: reversing is allowed only where the map has room for the
+  // body all along the way back.
+  bool room_behind = true;
+  const double back = std::abs(kBackOffSpeed) * kBackOffS;
+  for (double along = grid_->resolution(); room_behind && along <= back + 1e-9; along += grid_->resolution()) {
+    const double x = pose.x() - along * std::cos(pose.phi()), y = pose.y() - along * std::sin(pose.phi());
+    int col = 0, row = 0;
+    room_behind = grid_->cellAt(x, y, col, row) && grid_->clearance(col, row) >= options_.robot_radius_m;
+  }
+  const Command reverse = room_behind ? guard({kBackOffSpeed, 0.0}, pose) : Command{};
   // Hemmed in behind as well: turn on the spot instead (a disc turning touches nothing), which
   // shows the cameras another way out.
   return reverse.speed < 0.0 ? reverse : Command{0.0, options_.look_around_turn_rate};

@@ -208,5 +208,26 @@ TEST(FrontierExplorerTest, BrakesForWhatOnlyTheSensorShowsAndThenPlansRoundIt) {
   EXPECT_GT(robot.pose_.x, 3.0) << robot.pose_.asString();
 }
 
+TEST(FrontierExplorerTest, HeldByWhatItSeesAheadItDoesNotReverseIntoAWallBehind) {
+  // Backed up to the west wall (its cells end at x = 0.1; the body's back is at 0.15), facing
+  // east, and a post the sensor sees 0.5 m ahead holds it: the cameras do not see behind, the
+  // map does, so it must not back off into the wall (it turns on the spot instead).
+  const TestGrid cells = openToTheEast();
+  FrontierExplorer explorer(testOptions());
+  KinematicRobot robot({0.45, 2.0, 0.0});
+  for (double y = 1.8; y <= 2.2 + 1e-9; y += 0.05) robot.sensed_.emplace_back(0.95, y);
+  double westmost = robot.pose_.x;
+  int backing_off = 0;
+  for (int i = 0; i < 200; ++i) {
+    if (i % 4 == 0) explorer.updateMap(cells.grid(), mrpt::poses::CPose2D(robot.pose_));  // 5 Hz
+    if (!explorer.controlStep(robot)) break;
+    backing_off += explorer.status().phase == ExplorerPhase::kBackingOff ? 1 : 0;
+    robot.step(0.05);
+    westmost = std::min(westmost, robot.pose_.x);
+  }
+  EXPECT_GT(backing_off, 0);  // it was held, and the back-off was asked for
+  EXPECT_GT(westmost - testOptions().robot_radius_m, 0.1) << westmost;
+}
+
 }  // namespace
 }  // namespace stereonav
