@@ -76,53 +76,76 @@ void appendCellSpans(const ConvexPolygon& polygon, CellSpanBuffer& spans,
   }
 }
 
-void appendPolygonSpans(std::vector<ScanEdge>& edges, CellSpanBuffer& spans,
-                        const CellWindow& window) {
-  if (edges.empty()) return;
-  std::sort(edges.begin(), edges.end(),
-            [](const ScanEdge& a, const ScanEdge& b) { return a.v_low < b.v_low; });
-  double v_max = edges.front().v_high;
-  for (const ScanEdge& edge : edges) v_max = std::max(v_max, edge.v_high);
+void appendPolygonSpans(const std::vector<ScanEdge>& edges, CellSpanBuffer& spans,
+                        const CellWindow& window, PolygonScanScratch* scratch) {
+  PolygonScanScratch local_scratch;
+  PolygonScanScratch& storage = scratch != nullptr ? *scratch : local_scratch;
+  // An edge crosses the centre lines v = row + 0.5 with v_low <= v < v_high: rows
+  // [firstCellFrom(v_low), firstCellFrom(v_high)).
+  int row_begin = window.row_end, row_end = window.row_begin;
+  for (const ScanEdge& edge : edges) {
+    row_begin = std::min(row_begin, firstCellFrom(edge.v_low));
+    row_end = std::max(row_end, firstCellFrom(edge.v_high));
+  }
+  row_begin = std::max(row_begin, window.row_begin);
+  row_end = std::min(row_end, window.row_end);
+  if (row_end <= row_begin) return;
 
-  struct Crossing {
-    double u;
-    int winding;
-  };
-  // Edges crossing the current row: an edge is in for centres v with v_low <= v < v_high.
-  std::vector<const ScanEdge*> active;
-  std::vector<Crossing> crossings;
-  size_t next_edge = 0;
-  const int row_end = std::min(firstCellFrom(v_max), window.row_end);
-  for (int row = std::max(firstCellFrom(edges.front().v_low), window.row_begin); row < row_end;
-       ++row) {
-    const double v = row + 0.5;
-    while (next_edge < edges.size() && edges[next_edge].v_low <= v) {
-      active.push_back(&edges[next_edge++]);
+  // The crossings are bucketed by row, edge by edge, rather than found row by row from a list of
+  // active edges kept sorted by v_low: no sort of the edges, and each edge's crossings come from
+  // one tight loop. First each row's count (+1 where an edge starts, -1 where it ends, summed),
+  // then where each row's crossings start.
+  std::vector<int>& offsets = storage.row_offsets;
+  offsets.assign(static_cast<size_t>(row_end - row_begin) + 1, 0);
+  for (const ScanEdge& edge : edges) {
+    const int first = std::max(firstCellFrom(edge.v_low), row_begin);
+    const int end = std::min(firstCellFrom(edge.v_high), row_end);
+    if (first >= end) continue;
+    ++offsets[first - row_begin];
+    --offsets[end - row_begin];
+  }
+  int active = 0, total = 0;
+  for (int& offset : offsets) {
+    active += offset;
+    offset = total;
+    total += active;
+  }
+  std::vector<PolygonScanScratch::Crossing>& crossings = storage.crossings;
+  if (crossings.size() < static_cast<size_t>(total)) crossings.resize(2 * total);
+  // offsets[r] now counts up as row r's crossings are filled in; afterwards it is where row r + 1
+  // starts, so row r's crossings are [offsets[r - 1], offsets[r]).
+  for (const ScanEdge& edge : edges) {
+    const int first = std::max(firstCellFrom(edge.v_low), row_begin);
+    const int end = std::min(firstCellFrom(edge.v_high), row_end);
+    double v = first + 0.5;  // stays exact
+    for (int row = first; row < end; ++row, v += 1.0) {
+      crossings[offsets[row - row_begin]++] = {
+          std::clamp(edge.line.uAt(v), edge.u_low, edge.u_high), edge.winding};
     }
-    crossings.clear();
-    for (size_t i = 0; i < active.size();) {
-      if (active[i]->v_high <= v) {
-        active[i] = active.back();
-        active.pop_back();
-        continue;
-      }
-      const ScanEdge& edge = *active[i];
-      crossings.push_back({std::clamp(edge.line.uAt(v), edge.u_low, edge.u_high), edge.winding});
-      ++i;
-    }
+  }
+
+  int row_first = 0;
+  for (int row = row_begin; row < row_end; ++row) {
+    PolygonScanScratch::Crossing* first = crossings.data() + row_first;
+    PolygonScanScratch::Crossing* last = crossings.data() + offsets[row - row_begin];
+    row_first = offsets[row - row_begin];
     // Usually two crossings; a frontier running along the row (a wall seen at a grazing angle)
     // can bring a hundred.
-    std::sort(crossings.begin(), crossings.end(),
-              [](const Crossing& a, const Crossing& b) { return a.u < b.u; });
+    if (last - first == 2) {
+      if (first[1].u < first[0].u) std::swap(first[0], first[1]);
+    } else {
+      std::sort(first, last, [](const PolygonScanScratch::Crossing& a,
+                                const PolygonScanScratch::Crossing& b) { return a.u < b.u; });
+    }
     int winding = 0;
     double entered = 0.0;
-    for (const Crossing& crossing : crossings) {
+    for (const PolygonScanScratch::Crossing* crossing = first; crossing != last; ++crossing) {
       const int before = winding;
-      winding += crossing.winding;
-      if (before <= 0 && winding > 0) entered = crossing.u;
+      winding += crossing->winding;
+      if (before <= 0 && winding > 0) entered = crossing->u;
       if (before > 0 && winding <= 0) {
         const int col_begin = std::max(firstCellFrom(entered), window.col_begin);
-        const int col_end = std::min(firstCellFrom(crossing.u), window.col_end);
+        const int col_end = std::min(firstCellFrom(crossing->u), window.col_end);
         if (col_end > col_begin) {
           CellSpan* out = spans.room(1);
           *out = {row, col_begin, col_end};

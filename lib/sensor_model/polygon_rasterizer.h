@@ -111,12 +111,24 @@ struct ScanEdge {
 void appendCellSpans(const ConvexPolygon& polygon, CellSpanBuffer& spans,
                      const CellWindow& window = CellWindow::all());
 
+// Storage for appendPolygonSpans, kept by a caller that fills a polygon per scan so that after
+// the first one it allocates nothing.
+struct PolygonScanScratch {
+  struct Crossing {
+    double u;
+    int winding;
+  };
+  std::vector<int> row_offsets;  // per row, where its crossings start in `crossings`
+  std::vector<Crossing> crossings;
+};
+
 // The same for any polygon, or set of polygons that do not overlap, given as counter-clockwise
 // edges (nonzero winding): per row, the edges crossing the row's centre line are sorted and the
 // cells between entering and leaving crossings are taken with the same half-open rule, so that
 // shared EdgeLines split cells with convex neighbours exactly. Cost per row grows with the edges
-// crossing it, not with the polygon's size. Reorders `edges`.
-void appendPolygonSpans(std::vector<ScanEdge>& edges, CellSpanBuffer& spans,
-                        const CellWindow& window = CellWindow::all());
+// crossing it, not with the polygon's size.
+void appendPolygonSpans(const std::vector<ScanEdge>& edges, CellSpanBuffer& spans,
+                        const CellWindow& window = CellWindow::all(),
+                        PolygonScanScratch* scratch = nullptr);
 
 }  // namespace stereonav

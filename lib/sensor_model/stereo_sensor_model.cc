@@ -323,11 +323,11 @@ void StereoSensorModel::rasterize(const std::vector<ColumnReading>& readings,
   }
   raster.clear_begin = raster.spans.size();
   if (!options_.keep_obstacle_borders) {
-    appendPolygonSpans(clear, raster.spans, window);
+    appendPolygonSpans(clear, raster.spans, window, &raster.clear_scan);
     return;
   }
   raster.clear_cells.clear();
-  appendPolygonSpans(clear, raster.clear_cells, window);
+  appendPolygonSpans(clear, raster.clear_cells, window, &raster.clear_scan);
   raster.border_cells.clear();
   appendTouchedCells(raster.occupied_corners, raster.border_cells);
   std::sort(raster.border_cells.begin(), raster.border_cells.end(),

@@ -111,9 +111,11 @@ struct ScanRaster {
   std::vector<ReadingSpans> readings;
   CellSpanBuffer spans;
   size_t clear_begin = 0;
-  // Scratch: the CLEAR outline; for SensorModelOptions::keep_obstacle_borders also the cell
-  // corners inside OCC regions, the cells they touch, and the cells the outline covers.
+  // Scratch: the CLEAR outline and its scan conversion's buffers; for
+  // SensorModelOptions::keep_obstacle_borders also the cell corners inside OCC regions, the
+  // cells they touch, and the cells the outline covers.
   std::vector<ScanEdge> clear_edges;
+  PolygonScanScratch clear_scan;
   CellSpanBuffer occupied_corners;
   std::vector<CellSpan> border_cells;
   CellSpanBuffer clear_cells;
