@@ -88,7 +88,10 @@ Scene makeScene() {
   laser.resizeScanAndAssign(rays, laser.maxRange, false);
   for (size_t ray = 0; ray < rays; ++ray) {
     const double bearing = -half_aperture + 2 * half_aperture * ray / (rays - 1);
-    const int column = static_cast<int>(std::lround(cx - f * std::tan(bearing)));
+    // The outermost rays point at the image's outer pixel edges (column -0.5 and width - 0.5):
+    // they take the edge columns' readings.
+    const int last_column = rig.reference.width - 1;
+    const int column = std::clamp(static_cast<int>(std::lround(cx - f * std::tan(bearing))), 0, last_column);
     const double depth = rig.depthForDisparity(scan.column_disparity[column]);
     laser.setScanRange(ray, static_cast<float>(depth / std::cos(bearing)));
     laser.setScanRangeValidity(ray, true);
