@@ -12,7 +12,8 @@ constexpr double kStraightCurvature = 1e-4;
 
 // How far the disc of radius `radius_m` travels before touching the point (px, py), in the
 // mirrored frame where the robot moves forwards and turns left on a circle of `turn_radius`
-// (0: straight). Negative: the point is under the disc already.
+// (0: straight); `horizon_m` when it never does. A point already under the disc gives 0 if it
+// lies ahead and horizon_m if it lies behind (moving away from it).
 double travelTo(double px, double py, double radius_m, double turn_radius, double horizon_m) {
   const double r2 = radius_m * radius_m;
   if (px * px + py * py < r2) return px > 0.0 ? 0.0 : horizon_m;

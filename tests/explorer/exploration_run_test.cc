@@ -10,6 +10,7 @@
 
 #include "mapping/rawlog_mapping.h"
 #include "simulator/world_loader.h"
+#include "shipped_config.h"
 
 namespace stereonav {
 namespace {
@@ -32,8 +33,6 @@ size = 0.5 0.5
 height = 0.8
 )";
 
-std::string shippedConfig() { return std::string(STEREONAV_TEST_DATA_DIR) + "/../../ini/explore_160x120.ini"; }
-
 std::string outputDirectory(const std::string& name) {
   const std::string directory = std::string(STEREONAV_BINARY_DIR) + "/test_outputs/explorer/" + name;
   std::filesystem::remove_all(directory);
@@ -50,7 +49,7 @@ std::string readFile(const std::string& path) {
 
 TEST(ExplorationRunTest, ExploresASmallRoomWithoutCollisionAndTheRecordedRunReplaysToTheSameMap) {
   const World world = loadWorld(mrpt::config::CConfigFileMemory(kRoom), "room.ini");
-  const ExplorationConfig config = loadExplorationConfig(shippedConfig());
+  const ExplorationConfig config = loadExplorationConfig(testing::shippedExplorationConfigPath());
   const std::string directory = outputDirectory("room");
   ExplorationJob job;
   job.output_prefix = directory + "/room";
@@ -94,7 +93,7 @@ TEST(ExplorationRunTest, ExploresASmallRoomWithoutCollisionAndTheRecordedRunRepl
 
 TEST(ExplorationRunTest, ConfigErrorsNameTheFileSectionAndKey) {
   const std::string directory = outputDirectory("config");
-  std::string text = readFile(shippedConfig());
+  std::string text = readFile(testing::shippedExplorationConfigPath());
   text.replace(text.find("robot_radius_m = 0.3"), 20, "robot_radius_m = 0.2");
   std::ofstream(directory + "/small_radius.ini") << text;
   try {
@@ -104,7 +103,7 @@ TEST(ExplorationRunTest, ConfigErrorsNameTheFileSectionAndKey) {
     EXPECT_NE(std::string(error.what()).find("small_radius.ini: [explorer] robot_radius_m"), std::string::npos)
         << error.what();
   }
-  text = readFile(shippedConfig());
+  text = readFile(testing::shippedExplorationConfigPath());
   text.replace(text.find("lookahead_m"), 11, "lookahed_m");
   std::ofstream(directory + "/typo.ini") << text;
   try {

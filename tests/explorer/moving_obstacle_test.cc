@@ -7,19 +7,16 @@
 
 #include <filesystem>
 
-#include <filesystem>
-
 #include "explorer/exploration_run.h"
 #include "mapping/map_outputs.h"
 #include "mapping/stereo_mapper.h"
 #include "observations/rig_frame.h"
 #include "simulator/simulation.h"
 #include "simulator/world_loader.h"
+#include "shipped_config.h"
 
 namespace stereonav {
 namespace {
-
-std::string shippedConfig() { return std::string(STEREONAV_TEST_DATA_DIR) + "/../../ini/explore_160x120.ini"; }
 
 // A 6 m x 4 m room. The robot stands at (0.8, 2) looking east at the far wall; a box 0.6 m
 // across crosses its view along x = 3 at 0.5 m/s, from y = 1 northwards out through the wall
@@ -64,7 +61,7 @@ Counts countPassage(const DisparityTaggedGrid& grid) {
 
 TEST(MovingObstacleTest, TheMapForgetsABoxOnceItHasPassed) {
   const World world = loadWorld(mrpt::config::CConfigFileMemory(kBoxCrossing), "box.ini");
-  const ExplorationConfig config = loadExplorationConfig(shippedConfig());
+  const ExplorationConfig config = loadExplorationConfig(testing::shippedExplorationConfigPath());
   const SimulatorConfig& simulator = config.simulator;
   Simulation simulation(world, simulator.rig, simulator.sensor, simulator.robot, simulator.simulation);
   StereoMapper mapper(config.mapping, simulator.rig);
@@ -105,7 +102,7 @@ speed = 0.5
 
 TEST(MovingObstacleTest, TheExplorerDoesNotDriveIntoAPersonCrossingItsRoom) {
   const World world = loadWorld(mrpt::config::CConfigFileMemory(kPersonCrossing), "person.ini");
-  const ExplorationConfig config = loadExplorationConfig(shippedConfig());
+  const ExplorationConfig config = loadExplorationConfig(testing::shippedExplorationConfigPath());
   const std::string directory = std::string(STEREONAV_BINARY_DIR) + "/test_outputs/explorer/person";
   std::filesystem::create_directories(directory);
   ExplorationJob job;
