@@ -1,18 +1,59 @@
 #include "explorer/frontier_finder.h"
 
+#include <opencv2/imgproc.hpp>
+
 #include <algorithm>
 
 namespace stereonav {
 namespace {
 
-bool isFrontierCell(const NavigationGrid& grid, int col, int row) {
+// Unresolved (unknown or imprecise) cells that form a thin seam along an obstacle the map has
+// pinned down are not an opening: a wall's cells eroded by grazing rays, the band between a wall
+// and the region of uncertainty of its far readings. Looking again does not open them, and as
+// far views keep redrawing such bands the robot would tour finished rooms. A seam: a connected
+// region of unresolved cells none of which is farther than this from a resolved cell, touching
+// a precise obstacle.
+constexpr float kSeamHalfWidthCells = 1.5f;
+
+// Per cell: 1 for an unresolved cell of an opening, 0 otherwise (resolved, or in a seam).
+cv::Mat1b openingCells(const NavigationGrid& grid) {
+  const cv::Mat1b& classes = grid.cellClasses();
+  const cv::Mat1b unresolved = (classes == NavigationGrid::kUnknown) | (classes == NavigationGrid::kImprecise);
+  cv::Mat1i labels;
+  const int count = cv::connectedComponents(unresolved, labels, 8, CV_32S);
+  cv::Mat1f depth;
+  cv::distanceTransform(unresolved, depth, cv::DIST_L2, cv::DIST_MASK_PRECISE);
+  std::vector<uint8_t> thin(static_cast<size_t>(count), 1), touches_obstacle(static_cast<size_t>(count), 0);
+  for (int row = 0; row < classes.rows; ++row) {
+    for (int col = 0; col < classes.cols; ++col) {
+      const int label = labels(row, col);
+      if (label == 0) continue;
+      if (depth(row, col) > kSeamHalfWidthCells) thin[label] = 0;
+      if (touches_obstacle[label]) continue;
+      for (int dr = -1; dr <= 1; ++dr) {
+        for (int dc = -1; dc <= 1; ++dc) {
+          const int c = col + dc, r = row + dr;
+          if (grid.contains(c, r) && classes(r, c) == NavigationGrid::kOccupied) touches_obstacle[label] = 1;
+        }
+      }
+    }
+  }
+  cv::Mat1b opening(classes.size(), uint8_t{0});
+  for (int row = 0; row < classes.rows; ++row) {
+    for (int col = 0; col < classes.cols; ++col) {
+      const int label = labels(row, col);
+      opening(row, col) = label != 0 && !(thin[label] && touches_obstacle[label]) ? 1 : 0;
+    }
+  }
+  return opening;
+}
+
+bool isFrontierCell(const NavigationGrid& grid, const cv::Mat1b& opening, int col, int row) {
   if (grid.cellClass(col, row) != NavigationGrid::kFree) return false;
   static const int kNeighbours[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
   for (const auto& offset : kNeighbours) {
     const int c = col + offset[0], r = row + offset[1];
-    if (!grid.contains(c, r)) continue;
-    const uint8_t neighbour = grid.cellClass(c, r);
-    if (neighbour == NavigationGrid::kUnknown || neighbour == NavigationGrid::kImprecise) return true;
+    if (grid.contains(c, r) && opening(r, c)) return true;
   }
   return false;
 }
@@ -20,9 +61,10 @@ bool isFrontierCell(const NavigationGrid& grid, int col, int row) {
 }  // namespace
 
 std::vector<Frontier> findFrontiers(const NavigationGrid& grid, int min_cells) {
+  const cv::Mat1b opening = openingCells(grid);
   cv::Mat1b is_frontier(grid.height(), grid.width(), uint8_t{0});
   for (int row = 0; row < grid.height(); ++row) {
-    for (int col = 0; col < grid.width(); ++col) is_frontier(row, col) = isFrontierCell(grid, col, row) ? 1 : 0;
+    for (int col = 0; col < grid.width(); ++col) is_frontier(row, col) = isFrontierCell(grid, opening, col, row) ? 1 : 0;
   }
   std::vector<Frontier> frontiers;
   std::vector<cv::Point> stack;

@@ -17,7 +17,8 @@ struct Frontier {
 };
 
 // Frontier cells are free cells with an unknown or imprecise 4-neighbour (imprecise: an obstacle
-// seen only from far, which a closer look resolves); they are grouped by 8-connectivity
+// seen only from far, which a closer look resolves) that is not a gap in a surface already pinned
+// down (touching a precise obstacle, or with one two cells behind); they are grouped by 8-connectivity
 // and groups of fewer than `min_cells` cells are dropped (a lone unknown cell amid free space is
 // a gap in the stereo data, not an opening). Largest first.
 std::vector<Frontier> findFrontiers(const NavigationGrid& grid, int min_cells);

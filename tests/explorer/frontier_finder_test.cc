@@ -67,5 +67,39 @@ TEST(FrontierFinderTest, FreeCellsBesideAnObstacleSeenOnlyFromFarAreFrontier) {
   EXPECT_TRUE(findFrontiers(NavigationGrid(cells.grid(), {}, options), 1).empty());
 }
 
+TEST(FrontierFinderTest, AThinUnresolvedSeamAlongAPinnedDownWallIsNotAFrontier) {
+  // A closed room (walls cols/rows 4 and 12, precise) with unresolved cells along its east wall,
+  // rows 6..10, one or two cells deep (cols 11, or 10 and 11): a seam between the free floor and
+  // the wall, not an opening.
+  NavigationGridOptions options;
+  options.precise_min_disparity = 3.0f;
+  const auto room = [] {
+    TestGrid cells(20, 20);
+    cells.occupied(4, 4, 12, 12).tag(4, 4, 12, 12, 8.0f).free(5, 5, 11, 11);
+    return cells;
+  };
+  TestGrid one_deep = room();
+  one_deep.unknown(11, 6, 11, 10);
+  EXPECT_TRUE(findFrontiers(NavigationGrid(one_deep.grid(), {}, options), 1).empty());
+  TestGrid two_deep = room();
+  two_deep.unknown(10, 6, 11, 10);
+  EXPECT_TRUE(findFrontiers(NavigationGrid(two_deep.grid(), {}, options), 1).empty());
+  // Three deep (cols 9..11) the middle column is 2 cells from anything resolved: not a seam.
+  TestGrid three_deep = room();
+  three_deep.unknown(9, 6, 11, 10);
+  EXPECT_EQ(findFrontiers(NavigationGrid(three_deep.grid(), {}, options), 1).size(), 1u);
+  // The same one-deep band with the wall behind it gone joins the unknown outside: an opening,
+  // faced by col 10 (rows 6..10) and the band's ends (col 11, rows 5 and 11).
+  TestGrid open = room();
+  open.unknown(11, 6, 12, 10);
+  const std::vector<Frontier> frontiers = findFrontiers(NavigationGrid(open.grid(), {}, options), 1);
+  ASSERT_EQ(frontiers.size(), 1u);
+  ASSERT_EQ(frontiers[0].cells.size(), 7u);
+  for (const cv::Point& cell : frontiers[0].cells) {
+    EXPECT_TRUE((cell.x == 10 && cell.y >= 6 && cell.y <= 10) || (cell.x == 11 && (cell.y == 5 || cell.y == 11)))
+        << cell;
+  }
+}
+
 }  // namespace
 }  // namespace stereonav
