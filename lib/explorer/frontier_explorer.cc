@@ -23,6 +23,11 @@ constexpr double kMinTurnRate = 0.25;
 // threshold (50) takes eleven CLEAR updates of K = 20 (paper section 3.4), twelve frames at 5 Hz.
 // A frontier that resolves sooner ends the look at once (the next plan has another target).
 constexpr double kLookHoldS = 2.4;
+// The same holds for a frontier cell the robot merely passes in plain sight, a view per map:
+// after this many views up close that did not resolve it, it is dropped. Without this the edges
+// of what stereo cannot resolve (under a table top, a wall eroded by grazing rays and rebuilt by
+// far readings) flicker back as new frontier cells, and the robot tours a finished room.
+constexpr int kResolvingViews = 12;
 // Progress: the cost-to-go must drop by this much within stuck_timeout_s.
 constexpr double kProgressM = 0.3;
 // A robot that has moved this far from its last look-around may look around again.
@@ -62,6 +67,21 @@ constexpr double kHeldSpeed = 0.05;
 constexpr double kHoldingDepthM = 0.3;
 
 double clampAbs(double value, double limit) { return std::max(-limit, std::min(limit, value)); }
+
+// Whether `passes(col, row)` holds for every cell the straight line from cell `from` to cell `to`
+// crosses between them (sampled every half cell).
+template <typename CellTest>
+bool alongStraightLine(const cv::Point& from, const cv::Point& to, const CellTest& passes) {
+  const int steps = 2 * std::max(std::abs(to.x - from.x), std::abs(to.y - from.y));
+  for (int step = 1; step < steps; ++step) {
+    const double t = step / static_cast<double>(steps);
+    if (!passes(static_cast<int>(std::lround(from.x + (to.x - from.x) * t)),
+                static_cast<int>(std::lround(from.y + (to.y - from.y) * t)))) {
+      return false;
+    }
+  }
+  return true;
+}
 
 NearObstacleMemoryOptions nearObstacleOptions(const ExplorerOptions& options) {
   NearObstacleMemoryOptions memory;
@@ -108,10 +128,17 @@ void FrontierExplorer::updateMap(const DisparityTaggedGrid& grid, const mrpt::po
   if (visited_.empty() || std::hypot(pose.x() - visited_.back().x(), pose.y() - visited_.back().y()) >= kVisitSpacingM) {
     visited_.push_back(pose);
   }
+  target_cells_.clear();
+  if (grid_ && target_ && target_label_ >= 0 && target_label_ < static_cast<int>(frontiers_.size())) {
+    for (const cv::Point& cell : frontiers_[static_cast<size_t>(target_label_)].cells) {
+      target_cells_.insert(worldCell(cell.x, cell.y));
+    }
+  }
   std::vector<cv::Point2d> obstacles = contacts_;
   for (const mrpt::math::TPoint2D& point : near_obstacles_.points()) obstacles.emplace_back(point.x, point.y);
   grid_ = std::make_unique<NavigationGrid>(grid, visited_, grid_options_, obstacles);
   awaiting_map_ = false;
+  countCloseViews(pose);
   replan();
 }
 
@@ -139,11 +166,14 @@ void FrontierExplorer::replan() {
   cv::Mat1i label(grid_->height(), grid_->width(), -1);
   const double near_target_sq = (goal_radius + 0.3) * (goal_radius + 0.3);
   for (size_t i = 0; i < frontiers_.size(); ++i) {
+    // The target's frontier is the one still near the goal, or still holding some of its cells:
+    // a wall resolved look by look keeps the robot working along it, not jumping across the room
+    // each time the part nearest the goal is resolved.
     bool is_target = false;
     if (target_) {
       for (const cv::Point& cell : frontiers_[i].cells) {
         const double dx = grid_->centreX(cell.x) - target_->x, dy = grid_->centreY(cell.y) - target_->y;
-        if (dx * dx + dy * dy <= near_target_sq) {
+        if (dx * dx + dy * dy <= near_target_sq || target_cells_.count(worldCell(cell.x, cell.y)) > 0) {
           is_target = true;
           break;
         }
@@ -366,7 +396,7 @@ void FrontierExplorer::finish(const std::string& reason) {
 }
 
 bool FrontierExplorer::isDropped(int col, int row) const {
-  const double x = grid_->centreX(col), y = grid_->centreY(row), r = grid_->resolution();
+  const double x = grid_->centreX(col), y = grid_->centreY(row);
   const double half_view = options_.field_of_view_deg * M_PI / 360.0;
   for (const mrpt::poses::CPose2D& pose : looked_from_) {
     const double dx = x - pose.x(), dy = y - pose.y();
@@ -375,18 +405,48 @@ bool FrontierExplorer::isDropped(int col, int row) const {
       return true;
     }
   }
-  return dropped_.count({std::lround(x / r), std::lround(y / r)}) > 0;
+  const WorldCell key = worldCell(col, row);
+  if (dropped_.count(key) > 0) return true;
+  const auto views = close_views_.find(key);
+  return views != close_views_.end() && views->second >= kResolvingViews;
+}
+
+FrontierExplorer::WorldCell FrontierExplorer::worldCell(int col, int row) const {
+  const double r = grid_->resolution();
+  return {std::lround(grid_->centreX(col) / r), std::lround(grid_->centreY(row) / r)};
+}
+
+void FrontierExplorer::countCloseViews(const mrpt::poses::CPose2D& pose) {
+  int robot_col = 0, robot_row = 0;
+  if (!grid_->cellAt(pose.x(), pose.y(), robot_col, robot_row)) return;
+  const double range = options_.looked_at_range_m;
+  const double half_view = options_.field_of_view_deg * M_PI / 360.0;
+  const auto in_plain_sight = [&](const cv::Point& cell) {
+    const double dx = grid_->centreX(cell.x) - pose.x(), dy = grid_->centreY(cell.y) - pose.y();
+    if (dx * dx + dy * dy > range * range ||
+        std::abs(mrpt::math::wrapToPi(std::atan2(dy, dx) - pose.phi())) > half_view) {
+      return false;
+    }
+    // Over known free cells only: an obstacle or unseen space between hides the cell.
+    return alongStraightLine(cv::Point(robot_col, robot_row), cell, [&](int col, int row) {
+      return grid_->cellClass(col, row) == NavigationGrid::kFree;
+    });
+  };
+  for (const Frontier& frontier : findFrontiers(*grid_, options_.min_frontier_cells)) {
+    for (const cv::Point& cell : frontier.cells) {
+      if (in_plain_sight(cell)) ++close_views_[worldCell(cell.x, cell.y)];
+    }
+  }
 }
 
 void FrontierExplorer::dropFrontier(size_t index, const mrpt::poses::CPose2D& pose, bool whole) {
-  const double r = grid_->resolution();
   looked_from_.push_back(pose);
   if (whole) {
-    for (const cv::Point& cell : frontiers_[index].cells) {
-      dropped_.insert({std::lround(grid_->centreX(cell.x) / r), std::lround(grid_->centreY(cell.y) / r)});
-    }
+    for (const cv::Point& cell : frontiers_[index].cells) dropped_.insert(worldCell(cell.x, cell.y));
   }
   target_.reset();
+  target_label_ = -1;
+  target_cells_.clear();
   squeezing_ = false;
   replan();
 }
@@ -496,6 +556,7 @@ FrontierExplorer::Command FrontierExplorer::decide(const mrpt::poses::CPose2D& p
     best_cost_time_ = time_s;
   }
   target_ = goal_point;
+  target_label_ = field_->label(col, row);
   status_.has_target = true;
   status_.target_x = goal_point.x;
   status_.target_y = goal_point.y;
@@ -505,15 +566,16 @@ FrontierExplorer::Command FrontierExplorer::decide(const mrpt::poses::CPose2D& p
     // Arrived: face the nearest cell of the frontier, hold for the map to catch up, and if the
     // frontier is still there (unknown behind something stereo cannot resolve), drop it.
     const Frontier& frontier = frontiers_[static_cast<size_t>(field_->label(col, row))];
-    cv::Point2d nearest;
+    cv::Point nearest_cell;
     double nearest_sq = std::numeric_limits<double>::infinity();
     for (const cv::Point& cell : frontier.cells) {
       const double dx = grid_->centreX(cell.x) - pose.x(), dy = grid_->centreY(cell.y) - pose.y();
       if (dx * dx + dy * dy < nearest_sq) {
         nearest_sq = dx * dx + dy * dy;
-        nearest = cv::Point2d(grid_->centreX(cell.x), grid_->centreY(cell.y));
+        nearest_cell = cell;
       }
     }
+    const cv::Point2d nearest(grid_->centreX(nearest_cell.x), grid_->centreY(nearest_cell.y));
     if (status_.phase != ExplorerPhase::kLookingAtFrontier) {
       status_.phase = ExplorerPhase::kLookingAtFrontier;
       phase_start_time_ = std::numeric_limits<double>::infinity();
@@ -523,8 +585,7 @@ FrontierExplorer::Command FrontierExplorer::decide(const mrpt::poses::CPose2D& p
     phase_start_time_ = std::min(phase_start_time_, time_s);
     if (time_s - phase_start_time_ >= kLookHoldS) {
       // The faced cell goes in any case, so that every look makes progress.
-      const double r = grid_->resolution();
-      dropped_.insert({std::lround(nearest.x / r), std::lround(nearest.y / r)});
+      dropped_.insert(worldCell(nearest_cell.x, nearest_cell.y));
       dropFrontier(static_cast<size_t>(field_->label(col, row)), pose, nearest_sq < 1e-6);
       status_.phase = ExplorerPhase::kTurning;
     }

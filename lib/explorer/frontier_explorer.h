@@ -4,6 +4,7 @@
 #include <mrpt/poses/CPose2D.h>
 
 #include <deque>
+#include <map>
 #include <memory>
 #include <optional>
 #include <set>
@@ -104,6 +105,13 @@ class FrontierExplorer {
   // frontier `index` (given up as unreachable).
   void dropFrontier(size_t index, const mrpt::poses::CPose2D& pose, bool whole);
   bool isDropped(int col, int row) const;
+  // A cell's index in the world, round(x / r), round(y / r) of its centre: the grid grows by
+  // whole cells, so these stay valid from map to map.
+  using WorldCell = std::pair<long, long>;
+  WorldCell worldCell(int col, int row) const;
+  // Every new map is a new view: the frontier cells the robot at `pose` has in plain sight within
+  // looked_at_range_m count one more view (see kResolvingViews).
+  void countCloseViews(const mrpt::poses::CPose2D& pose);
 
   ExplorerOptions options_;
   CostToGoOptions planner_options_;
@@ -120,10 +128,15 @@ class FrontierExplorer {
   std::vector<Frontier> frontiers_;
   // Views that did not resolve their frontier: the robot's pose when it looked.
   std::vector<mrpt::poses::CPose2D> looked_from_;
-  // Frontier cells given up whole, by world cell index (round(x / r), round(y / r) of the
-  // centre): the grid grows by whole cells, so these stay valid.
-  std::set<std::pair<long, long>> dropped_;
+  // Frontier cells given up whole.
+  std::set<WorldCell> dropped_;
+  // Frontier cells: the maps in which they were in plain sight up close.
+  std::map<WorldCell, int> close_views_;
   std::optional<cv::Point2d> target_;
+  // The frontier the path leads to (index into frontiers_), and its cells as the previous map
+  // had them: a frontier sharing a cell with it is still the target.
+  int target_label_ = -1;
+  std::set<WorldCell> target_cells_;
   // A look-around: the heading turned so far and the heading at the last cycle.
   double turned_rad_ = 0.0;
   double last_phi_ = 0.0;

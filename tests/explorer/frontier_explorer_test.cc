@@ -187,6 +187,40 @@ TEST(FrontierExplorerTest, StopsWhenTheOnlyFrontierIsBeyondADoorTooNarrowForTheB
       << explorer.stopReason() << " " << phaseName(explorer.status().phase) << " " << robot.pose_.asString();
 }
 
+// A walled 4 m x 4 m room, known free but for an unknown 0.3 m x 0.3 m pocket (under a table
+// top, say): cells 25..27 x 21..23, x 2.5 .. 2.8, y 2.1 .. 2.4. Its ring of free cells is the
+// only frontier; a robot at (1.9, 2.25) facing east sees the ring's near side (column 24) 0.55 m
+// ahead, and not its far side (column 28), hidden behind the pocket. Optionally a wall in column
+// 23 hides the near side too.
+TestGrid roomWithAnUnresolvablePocket(bool wall_between) {
+  TestGrid cells(40, 40);
+  cells.occupied(0, 0, 39, 39).free(1, 1, 38, 38).unknown(25, 21, 27, 23);
+  if (wall_between) cells.occupied(23, 15, 23, 30);
+  return cells;
+}
+
+bool isFrontierInPlan(const FrontierExplorer& explorer, int col, int row) {
+  const cv::Mat3b plan = explorer.planImage();
+  return plan(plan.rows - 1 - row, col) == cv::Vec3b(255, 0, 0);
+}
+
+TEST(FrontierExplorerTest, DropsFrontierCellsInPlainSightUpCloseThatViewsDoNotResolve) {
+  // Views are counted per map, 5 maps a second. Resolving takes up to eleven CLEAR updates (the
+  // look hold, 2.4 s): after 2 s of views the near side is still a frontier, after 3 s it is
+  // given up; the hidden far side stays.
+  for (const bool wall_between : {false, true}) {
+    SCOPED_TRACE(wall_between ? "wall between" : "in plain sight");
+    const TestGrid cells = roomWithAnUnresolvablePocket(wall_between);
+    FrontierExplorer explorer(testOptions());
+    const mrpt::poses::CPose2D pose(1.9, 2.25, 0.0);
+    for (int map = 1; map <= 10; ++map) explorer.updateMap(cells.grid(), pose);
+    EXPECT_TRUE(isFrontierInPlan(explorer, 24, 22));
+    for (int map = 11; map <= 15; ++map) explorer.updateMap(cells.grid(), pose);
+    EXPECT_EQ(isFrontierInPlan(explorer, 24, 22), wall_between);
+    EXPECT_TRUE(isFrontierInPlan(explorer, 28, 22));
+  }
+}
+
 TEST(FrontierExplorerTest, BrakesForWhatOnlyTheSensorShowsAndThenPlansRoundIt) {
   // The map shows the way east clear; the sensor sees a 0.4 m wide post across it at x = 2.5 (a
   // table edge the map lost, a person): points 5 cm apart on its west face.
