@@ -32,7 +32,8 @@ struct ExplorerOptions {
   double target_switch_penalty_m = 2.0;
   // When the robot has reached a frontier and faced it, the frontier cells still left within
   // this range and inside the field of view are dropped: looking again from there would not
-  // resolve them (unknown behind something stereo cannot see, e.g. a textureless wall).
+  // resolve them (unknown behind something stereo cannot see, e.g. a textureless wall). So are
+  // frontier cells that were in plain sight within this range for as long as a look lasts.
   double looked_at_range_m = 1.0;
   double field_of_view_deg = 90.0;  // of the reference camera (paper section 2.1)
   // Reactive control.
