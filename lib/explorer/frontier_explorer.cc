@@ -137,13 +137,14 @@ void FrontierExplorer::updateMap(const DisparityTaggedGrid& grid, const mrpt::po
   std::vector<cv::Point2d> obstacles = contacts_;
   for (const mrpt::math::TPoint2D& point : near_obstacles_.points()) obstacles.emplace_back(point.x, point.y);
   grid_ = std::make_unique<NavigationGrid>(grid, visited_, grid_options_, obstacles);
+  map_frontiers_ = findFrontiers(*grid_, options_.min_frontier_cells);
   awaiting_map_ = false;
   countCloseViews(pose);
   replan();
 }
 
 void FrontierExplorer::replan() {
-  frontiers_ = findFrontiers(*grid_, options_.min_frontier_cells);
+  frontiers_ = map_frontiers_;
   for (Frontier& frontier : frontiers_) {
     frontier.cells.erase(std::remove_if(frontier.cells.begin(), frontier.cells.end(),
                                         [&](const cv::Point& cell) { return isDropped(cell.x, cell.y); }),
@@ -432,7 +433,7 @@ void FrontierExplorer::countCloseViews(const mrpt::poses::CPose2D& pose) {
       return grid_->cellClass(col, row) == NavigationGrid::kFree;
     });
   };
-  for (const Frontier& frontier : findFrontiers(*grid_, options_.min_frontier_cells)) {
+  for (const Frontier& frontier : map_frontiers_) {
     for (const cv::Point& cell : frontier.cells) {
       if (in_plain_sight(cell)) ++close_views_[worldCell(cell.x, cell.y)];
     }

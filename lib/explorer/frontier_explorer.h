@@ -125,6 +125,8 @@ class FrontierExplorer {
   NearObstacleMemory near_obstacles_;
   std::unique_ptr<NavigationGrid> grid_;
   std::unique_ptr<CostToGoField> field_;
+  // The newest map's frontiers as found, and as planned for (without the dropped cells).
+  std::vector<Frontier> map_frontiers_;
   std::vector<Frontier> frontiers_;
   // Views that did not resolve their frontier: the robot's pose when it looked.
   std::vector<mrpt::poses::CPose2D> looked_from_;
