@@ -22,7 +22,8 @@ cv::Mat1f distanceToBlocked(const cv::Mat1b& is_clear, double resolution) {
 }  // namespace
 
 NavigationGrid::NavigationGrid(const DisparityTaggedGrid& grid, const std::vector<mrpt::poses::CPose2D>& visited,
-                               const NavigationGridOptions& options, const std::vector<cv::Point2d>& contacts)
+                               const NavigationGridOptions& options, const std::vector<cv::Point2d>& contacts,
+                               const std::vector<cv::Point2d>& seen_free)
     : frame_(grid.frame()), cell_class_(grid.height(), grid.width()), sure_obstacle_(grid.height(), grid.width()) {
   const OccupancyScale& scale = grid.scale();
   for (int row = 0; row < grid.height(); ++row) {
@@ -42,6 +43,10 @@ NavigationGrid::NavigationGrid(const DisparityTaggedGrid& grid, const std::vecto
       }
     }
   }
+  for (const cv::Point2d& point : seen_free) {
+    int col = 0, row = 0;
+    if (cellAt(point.x, point.y, col, row) && cell_class_(row, col) != kOccupied) cell_class_(row, col) = kFree;
+  }
   const double body_radius_m = options.body_radius_m;
   const int reach = static_cast<int>(std::ceil(body_radius_m / frame_.resolution));
   for (const mrpt::poses::CPose2D& pose : visited) {
@@ -60,33 +65,40 @@ NavigationGrid::NavigationGrid(const DisparityTaggedGrid& grid, const std::vecto
     int col = 0, row = 0;
     if (cellAt(contact.x, contact.y, col, row)) cell_class_(row, col) = kOccupied;
   }
-  if (options.max_hole_cells > 0) fillHoles(options.max_hole_cells);
+  if (options.max_hole_cells > 0) freeIslands(cell_class_ == kUnknown, 4, options.max_hole_cells);
+  computeDistances();
+}
+
+void NavigationGrid::freeSpecks(int max_cells) {
+  freeIslands(cell_class_ >= kImprecise, 8, max_cells);
+  computeDistances();
+}
+
+void NavigationGrid::computeDistances() {
   clearance_m_ = distanceToBlocked(cell_class_ == kFree, frame_.resolution);
   obstacle_distance_m_ = distanceToBlocked(cell_class_ < kImprecise, frame_.resolution);
 }
 
-void NavigationGrid::fillHoles(int max_hole_cells) {
+void NavigationGrid::freeIslands(const cv::Mat1b& is_island, int connectivity, int max_cells) {
   cv::Mat1i labels;
   cv::Mat stats, centroids;
-  const int count = cv::connectedComponentsWithStats(cell_class_ == kUnknown, labels, stats, centroids, 4, CV_32S);
-  // Per island: small enough, and bordered by free cells only (not by occupied cells, the grid's
-  // edge or, through 4-connectivity, other unknown cells).
-  std::vector<uint8_t> is_hole(static_cast<size_t>(count), 0);
-  for (int label = 1; label < count; ++label) is_hole[label] = stats.at<int>(label, cv::CC_STAT_AREA) <= max_hole_cells;
-  static const int kNeighbours[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+  const int count = cv::connectedComponentsWithStats(is_island, labels, stats, centroids, connectivity, CV_32S);
+  std::vector<uint8_t> frees(static_cast<size_t>(count), 0);
+  for (int label = 1; label < count; ++label) frees[label] = stats.at<int>(label, cv::CC_STAT_AREA) <= max_cells;
+  static const int kNeighbours[8][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}, {1, 1}, {1, -1}, {-1, 1}, {-1, -1}};
   for (int row = 0; row < height(); ++row) {
     for (int col = 0; col < width(); ++col) {
       const int label = labels(row, col);
-      if (label == 0 || !is_hole[label]) continue;
-      for (const auto& offset : kNeighbours) {
-        const int c = col + offset[0], r = row + offset[1];
-        if (!contains(c, r) || (cell_class_(r, c) != kFree && labels(r, c) != label)) is_hole[label] = 0;
+      if (label == 0 || !frees[label]) continue;
+      for (int i = 0; i < connectivity; ++i) {
+        const int c = col + kNeighbours[i][0], r = row + kNeighbours[i][1];
+        if (!contains(c, r) || (cell_class_(r, c) != kFree && labels(r, c) != label)) frees[label] = 0;
       }
     }
   }
   for (int row = 0; row < height(); ++row) {
     for (int col = 0; col < width(); ++col) {
-      if (is_hole[labels(row, col)]) cell_class_(row, col) = kFree;
+      if (frees[labels(row, col)]) cell_class_(row, col) = kFree;
     }
   }
 }

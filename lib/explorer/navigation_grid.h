@@ -43,8 +43,11 @@ class NavigationGrid {
   // `visited` are robot positions (odometry frame, the map's). `contacts` are points where the
   // robot found itself blocked by something the map does not show (a table top seen edge-on,
   // paper section 6.1): their cells are occupied, as a bumper would report them.
+  // `seen_free` are points the robot has seen free from up close (seen_free_memory.h): their
+  // cells are free where the map holds them unknown or imprecise.
   NavigationGrid(const DisparityTaggedGrid& grid, const std::vector<mrpt::poses::CPose2D>& visited,
-                 const NavigationGridOptions& options, const std::vector<cv::Point2d>& contacts = {});
+                 const NavigationGridOptions& options, const std::vector<cv::Point2d>& contacts = {},
+                 const std::vector<cv::Point2d>& seen_free = {});
 
   int width() const { return cell_class_.cols; }
   int height() const { return cell_class_.rows; }
@@ -55,6 +58,11 @@ class NavigationGrid {
   double centreY(int row) const { return frame_.origin_y + (row + 0.5) * frame_.resolution; }
 
   uint8_t cellClass(int col, int row) const { return cell_class_(row, col); }
+  // Obstacle islands (occupied or imprecise, 8-connected) of at most `max_cells` cells whose
+  // every neighbour is free become free: as a rule a stereo mismatch that repeated rather than a
+  // post. The explorer passes them only when nothing else is reachable, with the reactive guard
+  // judging them from the scans.
+  void freeSpecks(int max_cells);
   // Whether the stereo map itself is sure of an obstacle at (x, y): its occupancy value is at
   // least sure_obstacle_g (the `contacts` the planner adds do not count).
   bool mapHoldsObstacle(double x, double y) const;
@@ -66,7 +74,10 @@ class NavigationGrid {
   float obstacleDistance(int col, int row) const { return obstacle_distance_m_(row, col); }
 
  private:
-  void fillHoles(int max_hole_cells);
+  // Islands of `is_island` cells (`connectivity` 4 or 8) of at most `max_cells` cells, bordered
+  // by free cells only (not by other cells or the grid's edge), become free.
+  void freeIslands(const cv::Mat1b& is_island, int connectivity, int max_cells);
+  void computeDistances();
 
   GridFrame frame_;
   cv::Mat1b cell_class_;

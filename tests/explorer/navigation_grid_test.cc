@@ -23,6 +23,23 @@ TEST(NavigationGridTest, WhereTheRobotStoodIsFreeUnlessTheMapSaysOccupied) {
   EXPECT_EQ(grid.cellClass(12, 10), NavigationGrid::kUnknown);
 }
 
+TEST(NavigationGridTest, FloorSeenFreeUpCloseIsFreeUnlessTheMapHoldsAPreciseObstacle) {
+  TestGrid cells(20, 20);
+  cells.unknown(0, 0, 19, 19).occupied(5, 5, 5, 5).tag(5, 5, 5, 5, 2.0f).occupied(6, 5, 6, 5).tag(6, 5, 6, 5, 12.0f);
+  NavigationGridOptions options;
+  options.precise_min_disparity = 8.0f;
+  const std::vector<cv::Point2d> seen_free = {{0.45, 0.55}, {0.55, 0.55}, {0.65, 0.55}, {1.95, 1.95}};
+  const NavigationGrid grid(cells.grid(), {}, options, {}, seen_free);
+  EXPECT_EQ(grid.cellClass(4, 5), NavigationGrid::kFree);      // unknown in the map
+  EXPECT_EQ(grid.cellClass(5, 5), NavigationGrid::kFree);      // a far reading's smear
+  EXPECT_EQ(grid.cellClass(6, 5), NavigationGrid::kOccupied);  // seen up close since
+  EXPECT_EQ(grid.cellClass(19, 19), NavigationGrid::kFree);
+  EXPECT_EQ(grid.cellClass(7, 5), NavigationGrid::kUnknown);
+  // A contact (what stopped the body) outranks the memory.
+  const NavigationGrid touched(cells.grid(), {}, options, {cv::Point2d(0.45, 0.55)}, seen_free);
+  EXPECT_EQ(touched.cellClass(4, 5), NavigationGrid::kOccupied);
+}
+
 TEST(NavigationGridTest, TheMapHoldsAnObstacleWhereItsOccupancyIsSureOfOne) {
   TestGrid cells(20, 20);
   cells.free(0, 0, 19, 19).occupied(10, 10, 10, 10).occupied(3, 3, 3, 3).tag(3, 3, 3, 3, 1.0f);
@@ -65,6 +82,31 @@ TEST(NavigationGridTest, SmallUnknownIslandsInsideFreeSpaceAreFreeButNotThoseTou
   EXPECT_EQ(grid.cellClass(15, 5), NavigationGrid::kUnknown);  // beside an obstacle
   options.max_hole_cells = 0;
   EXPECT_EQ(NavigationGrid(cells.grid(), {}, options).cellClass(5, 5), NavigationGrid::kUnknown);
+}
+
+TEST(NavigationGridTest, FreeingSpecksClearsLoneObstacleCellsOnlyAndTheClearanceWithThem) {
+  TestGrid cells(30, 20);
+  cells.free(0, 0, 29, 19)
+      .occupied(3, 10, 3, 10)                          // one cell
+      .occupied(8, 10, 9, 11).tag(8, 10, 9, 11, 1.0f)  // imprecise, 4 cells: too large
+      .occupied(14, 10, 14, 10).occupied(15, 11, 15, 11)  // two cells, touching diagonally
+      .occupied(20, 10, 20, 10).unknown(21, 10, 21, 10)   // beside unknown space
+      .occupied(25, 0, 25, 0);                            // at the grid's edge
+  NavigationGridOptions options;
+  options.precise_min_disparity = 3.0f;
+  NavigationGrid grid(cells.grid(), {}, options);
+  EXPECT_NEAR(grid.clearance(3, 13), 0.25, 1e-6);
+  grid.freeSpecks(2);
+  EXPECT_EQ(grid.cellClass(3, 10), NavigationGrid::kFree);
+  EXPECT_EQ(grid.cellClass(8, 10), NavigationGrid::kImprecise);
+  EXPECT_EQ(grid.cellClass(14, 10), NavigationGrid::kFree);
+  EXPECT_EQ(grid.cellClass(15, 11), NavigationGrid::kFree);
+  EXPECT_EQ(grid.cellClass(20, 10), NavigationGrid::kOccupied);
+  EXPECT_EQ(grid.cellClass(25, 0), NavigationGrid::kOccupied);
+  // The nearest blocked cell to (3, 13) is now the grid's border beyond column 0, 3.5 cells from
+  // its centre.
+  EXPECT_NEAR(grid.clearance(3, 13), 0.35, 1e-6);
+  EXPECT_NEAR(grid.obstacleDistance(3, 10), 0.35, 1e-6);
 }
 
 TEST(NavigationGridTest, ObstaclesSeenOnlyAtLowDisparityAreImprecise) {

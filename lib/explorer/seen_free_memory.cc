@@ -1,0 +1,62 @@
+#include "explorer/seen_free_memory.h"
+
+#include <mrpt/math/wrap2pi.h>
+
+#include <cmath>
+
+#include "explorer/straight_line.h"
+
+namespace stereonav {
+
+void SeenFreeMemory::update(const DisparityTaggedGrid& grid, const mrpt::poses::CPose2D& pose) {
+  int robot_col = 0, robot_row = 0;
+  if (!grid.cellAt(pose.x(), pose.y(), robot_col, robot_row)) return;
+  lattice_.anchor(grid.frame());
+  const OccupancyScale& scale = grid.scale();
+  const auto is_free = [&](int col, int row) {
+    return grid.containsCell(col, row) && scale.classify(grid.occupancy(col, row)) == CellClass::kFree;
+  };
+  const auto is_occupied = [&](int col, int row) {
+    return grid.containsCell(col, row) && scale.classify(grid.occupancy(col, row)) == CellClass::kOccupied;
+  };
+  const auto beside_obstacle = [&](int col, int row) {
+    for (int dr = -1; dr <= 1; ++dr) {
+      for (int dc = -1; dc <= 1; ++dc) {
+        if (is_occupied(col + dc, row + dr)) return true;
+      }
+    }
+    return false;
+  };
+  const double r = grid.resolution();
+  // The cameras never see the floor under the body: the line may start across it.
+  const double body_cells_sq = std::pow(options_.body_radius_m / r, 2);
+  const auto passes = [&](int col, int row) {
+    const double dc = col - robot_col, dr = row - robot_row;
+    return dc * dc + dr * dr <= body_cells_sq || is_free(col, row);
+  };
+  const double half_view = options_.field_of_view_deg * M_PI / 360.0;
+  const int reach = static_cast<int>(std::ceil(options_.range_m / r));
+  for (int row = robot_row - reach; row <= robot_row + reach; ++row) {
+    for (int col = robot_col - reach; col <= robot_col + reach; ++col) {
+      if (!is_free(col, row) || beside_obstacle(col, row)) continue;
+      const double x = grid.minX() + (col + 0.5) * r, y = grid.minY() + (row + 0.5) * r;
+      const double dx = x - pose.x(), dy = y - pose.y();
+      if (dx * dx + dy * dy > options_.range_m * options_.range_m ||
+          std::abs(mrpt::math::wrapToPi(std::atan2(dy, dx) - pose.phi())) > half_view) {
+        continue;
+      }
+      if (alongStraightLine(cv::Point(robot_col, robot_row), cv::Point(col, row), passes)) {
+        cells_.insert(lattice_.cellAt(x, y));
+      }
+    }
+  }
+}
+
+std::vector<cv::Point2d> SeenFreeMemory::cells() const {
+  std::vector<cv::Point2d> centres;
+  centres.reserve(cells_.size());
+  for (const WorldCellLattice::Cell& cell : cells_) centres.push_back(lattice_.centre(cell));
+  return centres;
+}
+
+}  // namespace stereonav

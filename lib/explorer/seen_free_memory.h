@@ -1,0 +1,54 @@
+#pragma once
+
+#include <mrpt/poses/CPose2D.h>
+#include <opencv2/core.hpp>
+
+#include <set>
+#include <vector>
+
+#include "explorer/world_cell_lattice.h"
+#include "occupancy_grid/disparity_tagged_grid.h"
+
+namespace stereonav {
+
+struct SeenFreeMemoryOptions {
+  // Cells the map holds free within this distance of the robot, in view, are remembered. Up
+  // close one disparity step is a few centimetres deep (Z^2 / (f B), paper section 3.2), so the
+  // free space in front of a reading there is certain.
+  double range_m = 2.0;
+  double field_of_view_deg = 90.0;
+  // The robot's body: the cameras never see the floor under it.
+  double body_radius_m = 0.3;
+};
+
+// Floor the robot has seen free from up close, kept for the planner. The paper's accuracy
+// preservation (section 4.3) keeps far readings from smearing obstacles seen up close, but not
+// free space: a far reading a disparity step off, or a ghost match on a repetitive texture
+// (section 4.1), paints its uncertainty region over floor seen free a moment ago. Such bands
+// closed corridors and doors behind the robot, and every band was a new frontier: the robot
+// toured finished rooms. The planner takes a remembered cell as free while the map holds it
+// unknown or imprecise; an obstacle the map holds precisely still wins, and the reactive guard
+// still brakes for whatever the newest scans show.
+class SeenFreeMemory {
+ public:
+  explicit SeenFreeMemory(const SeenFreeMemoryOptions& options) : options_(options) {}
+
+  // Remembers the cells the robot at `pose` (the map's frame) sees free in `grid`: within
+  // range_m, inside the field of view, not next to an occupied cell (a wall's edge, a door jamb,
+  // where a cell is part floor and part wall), and reached from the robot's cell by a straight
+  // line over free cells (an obstacle or unseen space between hides them). A remembered cell is
+  // kept for good: where the map holds it occupied the map wins anyway, and a moving obstacle's
+  // trail would otherwise reopen as frontiers every time it passes.
+  void update(const DisparityTaggedGrid& grid, const mrpt::poses::CPose2D& pose);
+
+  // Centres of the remembered cells (map frame).
+  std::vector<cv::Point2d> cells() const;
+  size_t size() const { return cells_.size(); }
+
+ private:
+  SeenFreeMemoryOptions options_;
+  WorldCellLattice lattice_;
+  std::set<WorldCellLattice::Cell> cells_;
+};
+
+}  // namespace stereonav
