@@ -24,6 +24,7 @@ ExplorerOptions loadExplorerOptions(IniSection& section) {
   if (options.field_of_view_deg >= 180.0) {
     throw ConfigError("[" + section.name() + "] field_of_view_deg: must be below 180");
   }
+  options.seen_free_range_m = section.getNonNegative("seen_free_range_m", options.seen_free_range_m);
   options.max_speed_mps = section.getPositive("max_speed_mps", options.max_speed_mps);
   options.max_turn_rate = section.getPositive("max_turn_rate", options.max_turn_rate);
   options.braking_deceleration = section.getPositive("braking_deceleration", options.braking_deceleration);

@@ -36,6 +36,9 @@ struct ExplorerOptions {
   // frontier cells that were in plain sight within this range for as long as a look lasts.
   double looked_at_range_m = 1.0;
   double field_of_view_deg = 90.0;  // of the reference camera (paper section 2.1)
+  // Floor seen free within this range stays free for the planner where far readings later smear
+  // it (seen_free_memory.h). 0: off.
+  double seen_free_range_m = 2.0;
   // Reactive control.
   double max_speed_mps = 1.5;
   double max_turn_rate = 1.2;  // rad/s
@@ -69,6 +72,7 @@ struct ExplorerOptions {
 
 // Section [explorer]: robot_radius_m, safety_margin_m, repulsion_distance_m, repulsion_weight,
 // max_hole_cells, precise_min_disparity, goal_distance_m, min_frontier_cells, target_switch_penalty_m, looked_at_range_m, field_of_view_deg,
+// seen_free_range_m,
 // max_speed_mps, max_turn_rate, braking_deceleration, heading_gain, turn_in_place_deg,
 // lookahead_m, initial_look_around, look_around_turn_rate, stuck_timeout_s, guard_margin_m,
 // obstacle_memory_range_m, obstacle_memory_blind_m, obstacle_memory_min_g.

@@ -10,6 +10,7 @@
 #include <limits>
 
 #include "explorer/free_travel.h"
+#include "explorer/straight_line.h"
 
 namespace stereonav {
 namespace {
@@ -18,6 +19,9 @@ namespace {
 // kMinTurnRate, so it ends.
 constexpr double kFacedRad = 0.2;
 constexpr double kMinTurnRate = 0.25;
+// Turning on the spot plans to brake at this rate (rad/s^2), within what robots like the paper's
+// manage (the simulated one: 4).
+constexpr double kTurnBraking = 3.0;
 // After facing a frontier the robot holds still this long so that the map sees what is behind it
 // before the frontier is judged: taking a cell that far readings saturated (255) below the free
 // threshold (50) takes eleven CLEAR updates of K = 20 (paper section 3.4), twelve frames at 5 Hz.
@@ -65,22 +69,17 @@ constexpr double kScanMemoryS = 1.0;
 // obstacles whether the map has them or not, so the next plan goes round them.
 constexpr double kHeldSpeed = 0.05;
 constexpr double kHoldingDepthM = 0.3;
+// Obstacle islands of up to this many cells are specks (NavigationGrid::freeSpecks).
+constexpr int kSpeckCells = 2;
 
 double clampAbs(double value, double limit) { return std::max(-limit, std::min(limit, value)); }
 
-// Whether `passes(col, row)` holds for every cell the straight line from cell `from` to cell `to`
-// crosses between them (sampled every half cell).
-template <typename CellTest>
-bool alongStraightLine(const cv::Point& from, const cv::Point& to, const CellTest& passes) {
-  const int steps = 2 * std::max(std::abs(to.x - from.x), std::abs(to.y - from.y));
-  for (int step = 1; step < steps; ++step) {
-    const double t = step / static_cast<double>(steps);
-    if (!passes(static_cast<int>(std::lround(from.x + (to.x - from.x) * t)),
-                static_cast<int>(std::lround(from.y + (to.y - from.y) * t)))) {
-      return false;
-    }
-  }
-  return true;
+SeenFreeMemoryOptions seenFreeOptions(const ExplorerOptions& options) {
+  SeenFreeMemoryOptions memory;
+  memory.range_m = options.seen_free_range_m;
+  memory.field_of_view_deg = options.field_of_view_deg;
+  memory.body_radius_m = options.robot_radius_m;
+  return memory;
 }
 
 NearObstacleMemoryOptions nearObstacleOptions(const ExplorerOptions& options) {
@@ -112,7 +111,7 @@ const char* phaseName(ExplorerPhase phase) {
 }
 
 FrontierExplorer::FrontierExplorer(const ExplorerOptions& options)
-    : options_(options), near_obstacles_(nearObstacleOptions(options)) {
+    : options_(options), near_obstacles_(nearObstacleOptions(options)), seen_free_(seenFreeOptions(options)) {
   planner_options_.body_radius_m = options.robot_radius_m + options.safety_margin_m;
   planner_options_.repulsion_distance_m = options.repulsion_distance_m;
   planner_options_.repulsion_weight = options.repulsion_weight;
@@ -128,6 +127,7 @@ void FrontierExplorer::updateMap(const DisparityTaggedGrid& grid, const mrpt::po
   if (visited_.empty() || std::hypot(pose.x() - visited_.back().x(), pose.y() - visited_.back().y()) >= kVisitSpacingM) {
     visited_.push_back(pose);
   }
+  lattice_.anchor(grid.frame());
   target_cells_.clear();
   if (grid_ && target_ && target_label_ >= 0 && target_label_ < static_cast<int>(frontiers_.size())) {
     for (const cv::Point& cell : frontiers_[static_cast<size_t>(target_label_)].cells) {
@@ -136,7 +136,9 @@ void FrontierExplorer::updateMap(const DisparityTaggedGrid& grid, const mrpt::po
   }
   std::vector<cv::Point2d> obstacles = contacts_;
   for (const mrpt::math::TPoint2D& point : near_obstacles_.points()) obstacles.emplace_back(point.x, point.y);
-  grid_ = std::make_unique<NavigationGrid>(grid, visited_, grid_options_, obstacles);
+  seen_free_.update(grid, pose);
+  grid_ = std::make_unique<NavigationGrid>(grid, visited_, grid_options_, obstacles, seen_free_.cells());
+  if (relaxation_ == Relaxation::kBareBodyPastSpecks) grid_->freeSpecks(kSpeckCells);
   map_frontiers_ = findFrontiers(*grid_, options_.min_frontier_cells);
   awaiting_map_ = false;
   countCloseViews(pose);
@@ -157,7 +159,7 @@ void FrontierExplorer::replan() {
                    frontiers_.end());
 
   CostToGoOptions planner = planner_options_;
-  if (squeezing_) planner.body_radius_m = options_.robot_radius_m;
+  if (relaxation_ != Relaxation::kNone) planner.body_radius_m = options_.robot_radius_m;
   field_ = std::make_unique<CostToGoField>(*grid_, planner);
   const double goal_radius = planner.body_radius_m + options_.goal_distance_m;
   const int reach = static_cast<int>(std::ceil(goal_radius / grid_->resolution()));
@@ -385,9 +387,11 @@ FrontierExplorer::Command FrontierExplorer::lookAround(const mrpt::poses::CPose2
 
 FrontierExplorer::Command FrontierExplorer::turnTowards(const mrpt::poses::CPose2D& pose, double x, double y) const {
   const double error = mrpt::math::wrapToPi(std::atan2(y - pose.y(), x - pose.x()) - pose.phi());
-  double turn_rate = clampAbs(options_.heading_gain * error, options_.max_turn_rate);
-  if (std::abs(turn_rate) < kMinTurnRate) turn_rate = std::copysign(kMinTurnRate, error);
-  return {0.0, turn_rate};
+  // As fast as the turn can still be braked to a stop at the heading: a proportional law would
+  // creep through the last half radian, and the robot turns on the spot a few hundred times an
+  // exploration.
+  const double turn_rate = std::max(kMinTurnRate, std::min(options_.max_turn_rate, std::sqrt(2.0 * kTurnBraking * std::abs(error))));
+  return {0.0, std::copysign(turn_rate, error)};
 }
 
 void FrontierExplorer::finish(const std::string& reason) {
@@ -413,8 +417,7 @@ bool FrontierExplorer::isDropped(int col, int row) const {
 }
 
 FrontierExplorer::WorldCell FrontierExplorer::worldCell(int col, int row) const {
-  const double r = grid_->resolution();
-  return {std::lround(grid_->centreX(col) / r), std::lround(grid_->centreY(row) / r)};
+  return lattice_.cellAt(grid_->centreX(col), grid_->centreY(row));
 }
 
 void FrontierExplorer::countCloseViews(const mrpt::poses::CPose2D& pose) {
@@ -448,7 +451,7 @@ void FrontierExplorer::dropFrontier(size_t index, const mrpt::poses::CPose2D& po
   target_.reset();
   target_label_ = -1;
   target_cells_.clear();
-  squeezing_ = false;
+  relaxation_ = Relaxation::kNone;
   replan();
 }
 
@@ -534,11 +537,24 @@ FrontierExplorer::Command FrontierExplorer::decide(const mrpt::poses::CPose2D& p
       forgot_x_ = pose.x();
       forgot_y_ = pose.y();
       awaiting_map_ = true;
-    } else if (!squeezing_ && options_.safety_margin_m > 0.0) {
+    } else if (relaxation_ == Relaxation::kNone && options_.safety_margin_m > 0.0) {
       // Doors seen obliquely come out narrower than they are (their jambs' regions of
       // uncertainty, paper section 3.2): try the gaps the bare body fits through; the guard
       // still keeps it off what the scans show. Until the next frontier is reached.
-      squeezing_ = true;
+      relaxation_ = Relaxation::kBareBody;
+      replan();
+    } else if (relaxation_ != Relaxation::kBareBodyPastSpecks) {
+      // Boxed in by specks: lone obstacle cells amid free space, each inflated by the body's
+      // radius, in the gaps beside furniture. Up close they are below the cameras' view, so no
+      // look clears them; most are stereo mismatches that repeated. Plan past
+      // them; the guard brakes for any the scans show to be real.
+      relaxation_ = Relaxation::kBareBodyPastSpecks;
+      grid_->freeSpecks(kSpeckCells);
+      near_obstacles_.forgetUnconfirmed([&](double x, double y) {
+        int c = 0, r = 0;
+        return !grid_->cellAt(x, y, c, r) || grid_->cellClass(c, r) != NavigationGrid::kFree;
+      });
+      map_frontiers_ = findFrontiers(*grid_, options_.min_frontier_cells);
       replan();
     } else {
       size_t cells = 0;

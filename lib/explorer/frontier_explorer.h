@@ -17,6 +17,8 @@
 #include "explorer/frontier_finder.h"
 #include "explorer/navigation_grid.h"
 #include "explorer/near_obstacle_memory.h"
+#include "explorer/seen_free_memory.h"
+#include "explorer/world_cell_lattice.h"
 
 namespace stereonav {
 
@@ -105,9 +107,8 @@ class FrontierExplorer {
   // frontier `index` (given up as unreachable).
   void dropFrontier(size_t index, const mrpt::poses::CPose2D& pose, bool whole);
   bool isDropped(int col, int row) const;
-  // A cell's index in the world, round(x / r), round(y / r) of its centre: the grid grows by
-  // whole cells, so these stay valid from map to map.
-  using WorldCell = std::pair<long, long>;
+  // A cell's name from map to map (world_cell_lattice.h).
+  using WorldCell = WorldCellLattice::Cell;
   WorldCell worldCell(int col, int row) const;
   // Every new map is a new view: the frontier cells the robot at `pose` has in plain sight within
   // looked_at_range_m count one more view (see kResolvingViews).
@@ -123,7 +124,9 @@ class FrontierExplorer {
   std::deque<std::pair<double, std::vector<mrpt::math::TPoint2D>>> recent_sensed_;
   mrpt::system::TTimeStamp last_scan_stamp_ = INVALID_TIMESTAMP;
   NearObstacleMemory near_obstacles_;
+  SeenFreeMemory seen_free_;
   std::unique_ptr<NavigationGrid> grid_;
+  WorldCellLattice lattice_;
   std::unique_ptr<CostToGoField> field_;
   // The newest map's frontiers as found, and as planned for (without the dropped cells).
   std::vector<Frontier> map_frontiers_;
@@ -149,9 +152,10 @@ class FrontierExplorer {
   double forgot_x_ = 0.0;
   double forgot_y_ = 0.0;
   bool awaiting_map_ = false;
-  // Planning with the bare body, without the safety margin, until the next frontier is reached
-  // (no frontier was reachable with it).
-  bool squeezing_ = false;
+  // How far planning is relaxed, until the next frontier is reached: no frontier was reachable
+  // with the safety margin, or then with the bare body either.
+  enum class Relaxation { kNone, kBareBody, kBareBodyPastSpecks };
+  Relaxation relaxation_ = Relaxation::kNone;
   double look_around_x_ = 0.0;  // where the last full look-around was
   double look_around_y_ = 0.0;
   // Progress watch: the lowest cost-to-go reached and when.

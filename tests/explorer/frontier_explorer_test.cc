@@ -187,6 +187,34 @@ TEST(FrontierExplorerTest, StopsWhenTheOnlyFrontierIsBeyondADoorTooNarrowForTheB
       << explorer.stopReason() << " " << phaseName(explorer.status().phase) << " " << robot.pose_.asString();
 }
 
+TEST(FrontierExplorerTest, WhenNothingElseIsReachableItPlansPastALoneSpeckInAPassage) {
+  // A passage 1.1 m wide (free y 1.1 .. 2.2) with the only frontier at its end (x = 4.0), and
+  // one obstacle cell in its middle at x = 2.0: inflated by the body it closes the passage, a
+  // repeated stereo mismatch that no look from nearby clears.
+  TestGrid cells(60, 40);
+  cells.occupied(0, 10, 40, 22).free(1, 11, 40, 21).unknown(41, 11, 41, 21).occupied(20, 16, 20, 16);
+  FrontierExplorer explorer(testOptions());
+  KinematicRobot robot({1.0, 1.65, 0.0});
+  int steps = 0;
+  for (; steps < 3000 && robot.pose_.x < 3.0; ++steps) {
+    if (steps % 4 == 0) explorer.updateMap(cells.grid(), mrpt::poses::CPose2D(robot.pose_));  // 5 Hz
+    if (!explorer.controlStep(robot)) break;
+    robot.step(0.05);
+  }
+  EXPECT_GT(robot.pose_.x, 3.0) << explorer.stopReason() << " " << robot.pose_.asString();
+  // Three cells long, it is an obstacle, not a speck: the robot stops.
+  cells.occupied(20, 15, 20, 17);
+  FrontierExplorer blocked(testOptions());
+  KinematicRobot stopped({1.0, 1.65, 0.0});
+  for (steps = 0; steps < 3000 && !blocked.finished(); ++steps) {
+    if (steps % 4 == 0) blocked.updateMap(cells.grid(), mrpt::poses::CPose2D(stopped.pose_));
+    if (!blocked.controlStep(stopped)) break;
+    stopped.step(0.05);
+  }
+  EXPECT_EQ(blocked.stopReason().rfind("no reachable frontier left", 0), 0u) << blocked.stopReason();
+  EXPECT_LT(stopped.pose_.x, 2.0);
+}
+
 // A walled 4 m x 4 m room, known free but for an unknown 0.3 m x 0.3 m pocket (under a table
 // top, say): cells 25..27 x 21..23, x 2.5 .. 2.8, y 2.1 .. 2.4. Its ring of free cells is the
 // only frontier; a robot at (1.9, 2.25) facing east sees the ring's near side (column 24) 0.55 m
