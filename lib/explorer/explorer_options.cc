@@ -19,6 +19,8 @@ ExplorerOptions loadExplorerOptions(IniSection& section) {
     throw ConfigError("[" + section.name() + "] min_frontier_cells: must be at least 1");
   }
   options.target_switch_penalty_m = section.getNonNegative("target_switch_penalty_m", options.target_switch_penalty_m);
+  options.pocket_area_m2 = section.getNonNegative("pocket_area_m2", options.pocket_area_m2);
+  options.pocket_penalty_m = section.getNonNegative("pocket_penalty_m", options.pocket_penalty_m);
   options.looked_at_range_m = section.getPositive("looked_at_range_m", options.looked_at_range_m);
   options.field_of_view_deg = section.getPositive("field_of_view_deg", options.field_of_view_deg);
   if (options.field_of_view_deg >= 180.0) {

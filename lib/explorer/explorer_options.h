@@ -30,6 +30,12 @@ struct ExplorerOptions {
   // Cost (metres of path) added to every frontier but the current target, so that the robot
   // does not dither between two frontiers at similar distances.
   double target_switch_penalty_m = 2.0;
+  // Cost (metres of path) added to frontiers that border only a pocket of unresolved cells
+  // smaller than pocket_area_m2 (under a desk, behind a cabinet, a ghost band in a room already
+  // seen): the rest of the building comes first, and pockets are looked into when nearby or
+  // when nothing else is left.
+  double pocket_area_m2 = 3.0;
+  double pocket_penalty_m = 10.0;
   // When the robot has reached a frontier and faced it, the frontier cells still left within
   // this range and inside the field of view are dropped: looking again from there would not
   // resolve them (unknown behind something stereo cannot see, e.g. a textureless wall). So are
@@ -71,7 +77,8 @@ struct ExplorerOptions {
 };
 
 // Section [explorer]: robot_radius_m, safety_margin_m, repulsion_distance_m, repulsion_weight,
-// max_hole_cells, precise_min_disparity, goal_distance_m, min_frontier_cells, target_switch_penalty_m, looked_at_range_m, field_of_view_deg,
+// max_hole_cells, precise_min_disparity, goal_distance_m, min_frontier_cells, target_switch_penalty_m, pocket_area_m2,
+// pocket_penalty_m, looked_at_range_m, field_of_view_deg,
 // seen_free_range_m,
 // max_speed_mps, max_turn_rate, braking_deceleration, heading_gain, turn_in_place_deg,
 // lookahead_m, initial_look_around, look_around_turn_rate, stuck_timeout_s, guard_margin_m,

@@ -15,12 +15,16 @@ namespace {
 // a precise obstacle.
 constexpr float kSeamHalfWidthCells = 1.5f;
 
-// Per cell: 1 for an unresolved cell of an opening, 0 otherwise (resolved, or in a seam).
-cv::Mat1b openingCells(const NavigationGrid& grid) {
+// Per cell: the label of the unresolved region of an opening it is in, 0 otherwise (resolved, or
+// in a seam); `areas` gets each label's cell count.
+cv::Mat1i openingRegions(const NavigationGrid& grid, std::vector<int>& areas) {
   const cv::Mat1b& classes = grid.cellClasses();
   const cv::Mat1b unresolved = (classes == NavigationGrid::kUnknown) | (classes == NavigationGrid::kImprecise);
   cv::Mat1i labels;
-  const int count = cv::connectedComponents(unresolved, labels, 8, CV_32S);
+  cv::Mat stats, centroids;
+  const int count = cv::connectedComponentsWithStats(unresolved, labels, stats, centroids, 8, CV_32S);
+  areas.assign(static_cast<size_t>(count), 0);
+  for (int label = 1; label < count; ++label) areas[label] = stats.at<int>(label, cv::CC_STAT_AREA);
   cv::Mat1f depth;
   cv::distanceTransform(unresolved, depth, cv::DIST_L2, cv::DIST_MASK_PRECISE);
   std::vector<uint8_t> thin(static_cast<size_t>(count), 1), touches_obstacle(static_cast<size_t>(count), 0);
@@ -38,34 +42,40 @@ cv::Mat1b openingCells(const NavigationGrid& grid) {
       }
     }
   }
-  cv::Mat1b opening(classes.size(), uint8_t{0});
   for (int row = 0; row < classes.rows; ++row) {
     for (int col = 0; col < classes.cols; ++col) {
       const int label = labels(row, col);
-      opening(row, col) = label != 0 && !(thin[label] && touches_obstacle[label]) ? 1 : 0;
+      if (label != 0 && thin[label] && touches_obstacle[label]) labels(row, col) = 0;
     }
   }
-  return opening;
+  return labels;
 }
 
-bool isFrontierCell(const NavigationGrid& grid, const cv::Mat1b& opening, int col, int row) {
-  if (grid.cellClass(col, row) != NavigationGrid::kFree) return false;
+// The largest area (cells) of the opening regions a free cell borders (4-neighbours), 0 if none:
+// then it is no frontier cell.
+int bordersOpening(const NavigationGrid& grid, const cv::Mat1i& regions, const std::vector<int>& areas, int col, int row) {
+  if (grid.cellClass(col, row) != NavigationGrid::kFree) return 0;
   static const int kNeighbours[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+  int largest = 0;
   for (const auto& offset : kNeighbours) {
     const int c = col + offset[0], r = row + offset[1];
-    if (grid.contains(c, r) && opening(r, c)) return true;
+    if (grid.contains(c, r) && regions(r, c) != 0) largest = std::max(largest, areas[static_cast<size_t>(regions(r, c))]);
   }
-  return false;
+  return largest;
 }
 
 }  // namespace
 
 std::vector<Frontier> findFrontiers(const NavigationGrid& grid, int min_cells) {
-  const cv::Mat1b opening = openingCells(grid);
-  cv::Mat1b is_frontier(grid.height(), grid.width(), uint8_t{0});
+  std::vector<int> areas;
+  const cv::Mat1i regions = openingRegions(grid, areas);
+  // Per cell: the area it borders, 0 if it is no frontier cell.
+  cv::Mat1i bordered(grid.height(), grid.width(), 0);
   for (int row = 0; row < grid.height(); ++row) {
-    for (int col = 0; col < grid.width(); ++col) is_frontier(row, col) = isFrontierCell(grid, opening, col, row) ? 1 : 0;
+    for (int col = 0; col < grid.width(); ++col) bordered(row, col) = bordersOpening(grid, regions, areas, col, row);
   }
+  cv::Mat1b is_frontier = bordered > 0;
+  const double cell_area = grid.resolution() * grid.resolution();
   std::vector<Frontier> frontiers;
   std::vector<cv::Point> stack;
   for (int row = 0; row < grid.height(); ++row) {
@@ -78,6 +88,7 @@ std::vector<Frontier> findFrontiers(const NavigationGrid& grid, int min_cells) {
         const cv::Point cell = stack.back();
         stack.pop_back();
         frontier.cells.push_back(cell);
+        frontier.unseen_area_m2 = std::max(frontier.unseen_area_m2, bordered(cell.y, cell.x) * cell_area);
         for (int dr = -1; dr <= 1; ++dr) {
           for (int dc = -1; dc <= 1; ++dc) {
             const int c = cell.x + dc, r = cell.y + dr;

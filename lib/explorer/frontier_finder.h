@@ -14,6 +14,10 @@ struct Frontier {
   std::vector<cv::Point> cells;  // (col, row)
   double centroid_x = 0.0;       // world metres (the grid's frame)
   double centroid_y = 0.0;
+  // The area of the largest unresolved region the frontier borders: a pocket enclosed by known
+  // space (under a desk, behind a cabinet) is small; the unexplored rest of the building, joined
+  // up through the unknown around the map, is large.
+  double unseen_area_m2 = 0.0;
 };
 
 // Frontier cells are free cells with an unknown or imprecise 4-neighbour (imprecise: an obstacle

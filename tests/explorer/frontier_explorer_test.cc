@@ -215,6 +215,27 @@ TEST(FrontierExplorerTest, WhenNothingElseIsReachableItPlansPastALoneSpeckInAPas
   EXPECT_LT(stopped.pose_.x, 2.0);
 }
 
+TEST(FrontierExplorerTest, HeadsForTheRestOfTheBuildingBeforeAPocketNearby) {
+  // A walled 6 m x 3 m room with a 0.4 m x 0.4 m unknown pocket 0.5 m from the robot (a desk's
+  // shadow) and a door in its far east wall to unknown space, 5 m away.
+  TestGrid cells(80, 40);
+  cells.occupied(0, 0, 61, 31).free(1, 1, 60, 30).unknown(15, 14, 18, 17).unknown(61, 12, 61, 18);
+  for (const double penalty : {10.0, 0.0}) {
+    ExplorerOptions options = testOptions();
+    options.pocket_penalty_m = penalty;
+    FrontierExplorer explorer(options);
+    KinematicRobot robot({1.0, 1.55, 0.0});
+    explorer.updateMap(cells.grid(), mrpt::poses::CPose2D(robot.pose_));
+    ASSERT_TRUE(explorer.controlStep(robot));
+    ASSERT_TRUE(explorer.status().has_target);
+    if (penalty > 0.0) {
+      EXPECT_GT(explorer.status().target_x, 5.0);
+    } else {
+      EXPECT_LT(explorer.status().target_x, 2.5);
+    }
+  }
+}
+
 // A walled 4 m x 4 m room, known free but for an unknown 0.3 m x 0.3 m pocket (under a table
 // top, say): cells 25..27 x 21..23, x 2.5 .. 2.8, y 2.1 .. 2.4. Its ring of free cells is the
 // only frontier; a robot at (1.9, 2.25) facing east sees the ring's near side (column 24) 0.55 m

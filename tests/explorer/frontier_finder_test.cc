@@ -21,6 +21,21 @@ TEST(FrontierFinderTest, FreeSquareInUnknownHasItsWholeBorderAsOneFrontier) {
   EXPECT_NEAR(frontiers[0].centroid_y, 0.75, 1e-9);
 }
 
+TEST(FrontierFinderTest, AFrontierKnowsHowMuchUnseenSpaceLiesBehindIt) {
+  // A walled 2 m x 2 m room (cells 1..20) with a 4 x 4 cell unknown pocket in it (a desk's
+  // shadow) and a 5-cell door in its east wall (col 21, rows 8..12), unknown, to the unknown
+  // space around: 416 cells, the 30 x 30 grid less the room and its walls (22 x 22).
+  TestGrid cells(30, 30);
+  cells.occupied(0, 0, 21, 21).free(1, 1, 20, 20).unknown(5, 5, 8, 8).unknown(21, 8, 21, 12);
+  const std::vector<Frontier> frontiers = findFrontiers(NavigationGrid(cells.grid(), {}, NavigationGridOptions{}), 1);
+  ASSERT_EQ(frontiers.size(), 2u);
+  // Largest first: the pocket's ring (16 cells) before the door (5 cells).
+  EXPECT_EQ(frontiers[0].cells.size(), 16u);
+  EXPECT_NEAR(frontiers[0].unseen_area_m2, 16 * 0.01, 1e-9);
+  EXPECT_EQ(frontiers[1].cells.size(), 5u);
+  EXPECT_NEAR(frontiers[1].unseen_area_m2, (900 - 22 * 22 + 5) * 0.01, 1e-9);
+}
+
 TEST(FrontierFinderTest, CellsBesideAnObstacleAreNotFrontier) {
   TestGrid cells(20, 20);
   cells.free(5, 5, 9, 9).occupied(10, 4, 10, 10);
