@@ -16,16 +16,13 @@ void SeenFreeMemory::update(const DisparityTaggedGrid& grid, const mrpt::poses::
   const auto is_free = [&](int col, int row) {
     return grid.containsCell(col, row) && scale.classify(grid.occupancy(col, row)) == CellClass::kFree;
   };
-  const auto is_occupied = [&](int col, int row) {
-    return grid.containsCell(col, row) && scale.classify(grid.occupancy(col, row)) == CellClass::kOccupied;
-  };
-  const auto beside_obstacle = [&](int col, int row) {
+  const auto amid_free = [&](int col, int row) {
     for (int dr = -1; dr <= 1; ++dr) {
       for (int dc = -1; dc <= 1; ++dc) {
-        if (is_occupied(col + dc, row + dr)) return true;
+        if (!is_free(col + dc, row + dr)) return false;
       }
     }
-    return false;
+    return true;
   };
   const double r = grid.resolution();
   // The cameras never see the floor under the body: the line may start across it.
@@ -38,7 +35,7 @@ void SeenFreeMemory::update(const DisparityTaggedGrid& grid, const mrpt::poses::
   const int reach = static_cast<int>(std::ceil(options_.range_m / r));
   for (int row = robot_row - reach; row <= robot_row + reach; ++row) {
     for (int col = robot_col - reach; col <= robot_col + reach; ++col) {
-      if (!is_free(col, row) || beside_obstacle(col, row)) continue;
+      if (!amid_free(col, row)) continue;
       const double x = grid.minX() + (col + 0.5) * r, y = grid.minY() + (row + 0.5) * r;
       const double dx = x - pose.x(), dy = y - pose.y();
       if (dx * dx + dy * dy > options_.range_m * options_.range_m ||

@@ -34,8 +34,9 @@ class SeenFreeMemory {
   explicit SeenFreeMemory(const SeenFreeMemoryOptions& options) : options_(options) {}
 
   // Remembers the cells the robot at `pose` (the map's frame) sees free in `grid`: within
-  // range_m, inside the field of view, not next to an occupied cell (a wall's edge, a door jamb,
-  // where a cell is part floor and part wall), and reached from the robot's cell by a straight
+  // range_m, inside the field of view, with free cells all round (not at a wall's edge or a door
+  // jamb seen edge-on, where a cell may be part floor and part wall, nor at the edge of what was
+  // seen), and reached from the robot's cell by a straight
   // line over free cells (an obstacle or unseen space between hides them). A remembered cell is
   // kept for good: where the map holds it occupied the map wins anyway, and a moving obstacle's
   // trail would otherwise reopen as frontiers every time it passes.
