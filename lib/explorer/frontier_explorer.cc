@@ -10,7 +10,7 @@
 #include <limits>
 
 #include "explorer/free_travel.h"
-#include "explorer/straight_line.h"
+#include "explorer/line_of_sight.h"
 
 namespace stereonav {
 namespace {
@@ -405,11 +405,7 @@ bool FrontierExplorer::isDropped(int col, int row) const {
   const double x = grid_->centreX(col), y = grid_->centreY(row);
   const double half_view = options_.field_of_view_deg * M_PI / 360.0;
   for (const mrpt::poses::CPose2D& pose : looked_from_) {
-    const double dx = x - pose.x(), dy = y - pose.y();
-    if (dx * dx + dy * dy <= options_.looked_at_range_m * options_.looked_at_range_m &&
-        std::abs(mrpt::math::wrapToPi(std::atan2(dy, dx) - pose.phi())) <= half_view) {
-      return true;
-    }
+    if (withinView(pose, x, y, options_.looked_at_range_m, half_view)) return true;
   }
   const WorldCell key = worldCell(col, row);
   if (dropped_.count(key) > 0) return true;
@@ -427,11 +423,7 @@ void FrontierExplorer::countCloseViews(const mrpt::poses::CPose2D& pose) {
   const double range = options_.looked_at_range_m;
   const double half_view = options_.field_of_view_deg * M_PI / 360.0;
   const auto in_plain_sight = [&](const cv::Point& cell) {
-    const double dx = grid_->centreX(cell.x) - pose.x(), dy = grid_->centreY(cell.y) - pose.y();
-    if (dx * dx + dy * dy > range * range ||
-        std::abs(mrpt::math::wrapToPi(std::atan2(dy, dx) - pose.phi())) > half_view) {
-      return false;
-    }
+    if (!withinView(pose, grid_->centreX(cell.x), grid_->centreY(cell.y), range, half_view)) return false;
     // Over known free cells only: an obstacle or unseen space between hides the cell.
     return alongStraightLine(cv::Point(robot_col, robot_row), cell, [&](int col, int row) {
       return grid_->cellClass(col, row) == NavigationGrid::kFree;

@@ -1,10 +1,8 @@
 #include "explorer/seen_free_memory.h"
 
-#include <mrpt/math/wrap2pi.h>
-
 #include <cmath>
 
-#include "explorer/straight_line.h"
+#include "explorer/line_of_sight.h"
 
 namespace stereonav {
 
@@ -37,12 +35,8 @@ void SeenFreeMemory::update(const DisparityTaggedGrid& grid, const mrpt::poses::
     for (int col = robot_col - reach; col <= robot_col + reach; ++col) {
       if (!amid_free(col, row)) continue;
       const double x = grid.minX() + (col + 0.5) * r, y = grid.minY() + (row + 0.5) * r;
-      const double dx = x - pose.x(), dy = y - pose.y();
-      if (dx * dx + dy * dy > options_.range_m * options_.range_m ||
-          std::abs(mrpt::math::wrapToPi(std::atan2(dy, dx) - pose.phi())) > half_view) {
-        continue;
-      }
-      if (alongStraightLine(cv::Point(robot_col, robot_row), cv::Point(col, row), passes)) {
+      if (withinView(pose, x, y, options_.range_m, half_view) &&
+          alongStraightLine(cv::Point(robot_col, robot_row), cv::Point(col, row), passes)) {
         cells_.insert(lattice_.cellAt(x, y));
       }
     }

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <mrpt/math/wrap2pi.h>
+#include <mrpt/poses/CPose2D.h>
 #include <opencv2/core.hpp>
 
 #include <algorithm>
@@ -21,6 +23,14 @@ bool alongStraightLine(const cv::Point& from, const cv::Point& to, const CellTes
     }
   }
   return true;
+}
+
+// Whether point (x, y) lies within `range_m` of the camera at `pose` and inside its field of view
+// (`half_view_rad` either side of the heading), boundaries included.
+inline bool withinView(const mrpt::poses::CPose2D& pose, double x, double y, double range_m, double half_view_rad) {
+  const double dx = x - pose.x(), dy = y - pose.y();
+  return dx * dx + dy * dy <= range_m * range_m &&
+         std::abs(mrpt::math::wrapToPi(std::atan2(dy, dx) - pose.phi())) <= half_view_rad;
 }
 
 }  // namespace stereonav
