@@ -39,12 +39,16 @@ ExplorationCoverage measureCoverage(const GroundTruthMap& truth, const Disparity
       coverage.reachable_free_m2 += cell_area;
       int col = 0, row = 0;
       const double x = truth.xMin() + (ix + 0.5) * resolution, y = truth.yMin() + (iy + 0.5) * resolution;
-      if (map.cellAt(x, y, col, row) && map.scale().classify(map.occupancy(col, row)) == CellClass::kFree) {
-        coverage.covered_m2 += cell_area;
-      }
+      if (!map.cellAt(x, y, col, row)) continue;
+      const CellClass cell = map.scale().classify(map.occupancy(col, row));
+      if (cell != CellClass::kUnknown) coverage.seen_m2 += cell_area;
+      if (cell == CellClass::kFree) coverage.covered_m2 += cell_area;
     }
   }
-  if (coverage.reachable_free_m2 > 0.0) coverage.coverage = coverage.covered_m2 / coverage.reachable_free_m2;
+  if (coverage.reachable_free_m2 > 0.0) {
+    coverage.coverage = coverage.covered_m2 / coverage.reachable_free_m2;
+    coverage.seen_coverage = coverage.seen_m2 / coverage.reachable_free_m2;
+  }
   const double map_cell_area = map.resolution() * map.resolution();
   for (int row = 0; row < map.height(); ++row) {
     for (int col = 0; col < map.width(); ++col) {

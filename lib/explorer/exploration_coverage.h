@@ -13,6 +13,11 @@ struct ExplorationCoverage {
   // Of those, the area the stereo map holds as free (the map's cell at the same world point).
   double covered_m2 = 0.0;
   double coverage = 0.0;  // covered / reachable
+  // Of those, the area the map holds as known at all (free or occupied): what the robot has
+  // looked at, right or wrong. covered / seen is the map's quality there, seen / reachable the
+  // exploration's reach.
+  double seen_m2 = 0.0;
+  double seen_coverage = 0.0;  // seen / reachable
   // The map's own view: cells known free or occupied, and known free, anywhere.
   double known_area_m2 = 0.0;
   double free_area_m2 = 0.0;

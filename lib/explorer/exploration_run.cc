@@ -167,7 +167,8 @@ ExplorationConfig loadExplorationConfig(const std::string& path) {
 std::string ExplorationReport::summary() const {
   std::ostringstream text;
   text << std::fixed << std::setprecision(1) << "explored " << coverage.free_area_m2 << " m2 free ("
-       << 100.0 * coverage.coverage << "% of the reachable free space), drove " << distance_m << " m in "
+       << 100.0 * coverage.coverage << "% of the reachable free space; " << 100.0 * coverage.seen_coverage
+       << "% seen), drove " << distance_m << " m in "
        << sim_time_s << " s simulated (" << wall_time_s << " s wall), " << collisions
        << " collision(s); stopped: " << stop_reason;
   return text.str();
@@ -181,6 +182,8 @@ std::string ExplorationReport::toJson() const {
        << "  \"reachable_free_m2\": " << coverage.reachable_free_m2 << ",\n"
        << "  \"covered_reachable_free_m2\": " << coverage.covered_m2 << ",\n"
        << "  \"coverage\": " << coverage.coverage << ",\n"
+       << "  \"seen_reachable_free_m2\": " << coverage.seen_m2 << ",\n"
+       << "  \"seen_coverage\": " << coverage.seen_coverage << ",\n"
        << "  \"distance_m\": " << distance_m << ",\n"
        << "  \"sim_time_s\": " << sim_time_s << ",\n"
        << "  \"wall_time_s\": " << wall_time_s << ",\n"
