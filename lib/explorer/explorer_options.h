@@ -32,10 +32,10 @@ struct ExplorerOptions {
   double target_switch_penalty_m = 2.0;
   // Cost (metres of path) added to frontiers that border only a pocket of unresolved cells
   // smaller than pocket_area_m2 (under a desk, behind a cabinet, a ghost band in a room already
-  // seen): the rest of the building comes first, and pockets are looked into when nearby or
-  // when nothing else is left.
+  // seen), or only obstacles seen from far (where a wall is, not new floor): the rest of the
+  // building comes first, and these are looked into when nearby or when nothing else is left.
   double pocket_area_m2 = 3.0;
-  double pocket_penalty_m = 10.0;
+  double pocket_penalty_m = 25.0;
   // When the robot has reached a frontier and faced it, the frontier cells still left within
   // this range and inside the field of view are dropped: looking again from there would not
   // resolve them (unknown behind something stereo cannot see, e.g. a textureless wall). So are

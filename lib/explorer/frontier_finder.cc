@@ -64,6 +64,16 @@ int bordersOpening(const NavigationGrid& grid, const cv::Mat1i& regions, const s
   return largest;
 }
 
+// Whether a frontier cell's unresolved 4-neighbours include an unknown cell of an opening.
+bool bordersUnknown(const NavigationGrid& grid, const cv::Mat1i& regions, int col, int row) {
+  static const int kNeighbours[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+  for (const auto& offset : kNeighbours) {
+    const int c = col + offset[0], r = row + offset[1];
+    if (grid.contains(c, r) && regions(r, c) != 0 && grid.cellClass(c, r) == NavigationGrid::kUnknown) return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 std::vector<Frontier> findFrontiers(const NavigationGrid& grid, int min_cells) {
@@ -89,6 +99,7 @@ std::vector<Frontier> findFrontiers(const NavigationGrid& grid, int min_cells) {
         stack.pop_back();
         frontier.cells.push_back(cell);
         frontier.unseen_area_m2 = std::max(frontier.unseen_area_m2, bordered(cell.y, cell.x) * cell_area);
+        frontier.borders_unknown = frontier.borders_unknown || bordersUnknown(grid, regions, cell.x, cell.y);
         for (int dr = -1; dr <= 1; ++dr) {
           for (int dc = -1; dc <= 1; ++dc) {
             const int c = cell.x + dc, r = cell.y + dr;

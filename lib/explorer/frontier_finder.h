@@ -18,6 +18,9 @@ struct Frontier {
   // space (under a desk, behind a cabinet) is small; the unexplored rest of the building, joined
   // up through the unknown around the map, is large.
   double unseen_area_m2 = 0.0;
+  // Some cell of it borders unknown space, not only obstacles seen from far: looking there shows
+  // new floor, not only where a known wall is.
+  bool borders_unknown = false;
 };
 
 // Frontier cells are free cells with an unknown or imprecise 4-neighbour (imprecise: an obstacle

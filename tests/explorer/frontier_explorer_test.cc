@@ -236,6 +236,30 @@ TEST(FrontierExplorerTest, HeadsForTheRestOfTheBuildingBeforeAPocketNearby) {
   }
 }
 
+TEST(FrontierExplorerTest, HeadsForUnknownSpaceBeforeAWallSeenOnlyFromFar) {
+  // A walled 6 m x 3 m room (cells 1..60 x 5..34) with unknown space all round it, a door in its
+  // far east wall (x 6.1, 5.5 m from the robot) and a 0.7 m stretch of its south wall beside the
+  // robot seen only from far (disparity 2): looking there would pin down where that wall is,
+  // looking through the door shows new floor.
+  TestGrid cells(80, 40);
+  cells.occupied(0, 4, 61, 35).free(1, 5, 60, 34).tag(8, 4, 14, 4, 2.0f).unknown(61, 16, 61, 22);
+  for (const double penalty : {10.0, 0.0}) {
+    ExplorerOptions options = testOptions();
+    options.pocket_penalty_m = penalty;
+    FrontierExplorer explorer(options);
+    KinematicRobot robot({1.0, 1.2, -1.57});
+    explorer.updateMap(cells.grid(), mrpt::poses::CPose2D(robot.pose_));
+    ASSERT_TRUE(explorer.controlStep(robot));
+    ASSERT_TRUE(explorer.status().has_target);
+    if (penalty > 0.0) {
+      EXPECT_GT(explorer.status().target_x, 5.0);
+    } else {
+      EXPECT_LT(explorer.status().target_x, 2.0);
+      EXPECT_LT(explorer.status().target_y, 1.2);
+    }
+  }
+}
+
 // A walled 4 m x 4 m room, known free but for an unknown 0.3 m x 0.3 m pocket (under a table
 // top, say): cells 25..27 x 21..23, x 2.5 .. 2.8, y 2.1 .. 2.4. Its ring of free cells is the
 // only frontier; a robot at (1.9, 2.25) facing east sees the ring's near side (column 24) 0.55 m

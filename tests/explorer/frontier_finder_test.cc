@@ -34,6 +34,8 @@ TEST(FrontierFinderTest, AFrontierKnowsHowMuchUnseenSpaceLiesBehindIt) {
   EXPECT_NEAR(frontiers[0].unseen_area_m2, 16 * 0.01, 1e-9);
   EXPECT_EQ(frontiers[1].cells.size(), 5u);
   EXPECT_NEAR(frontiers[1].unseen_area_m2, (900 - 22 * 22 + 5) * 0.01, 1e-9);
+  EXPECT_TRUE(frontiers[0].borders_unknown);
+  EXPECT_TRUE(frontiers[1].borders_unknown);
 }
 
 TEST(FrontierFinderTest, CellsBesideAnObstacleAreNotFrontier) {
@@ -78,6 +80,9 @@ TEST(FrontierFinderTest, FreeCellsBesideAnObstacleSeenOnlyFromFarAreFrontier) {
   ASSERT_EQ(frontiers.size(), 1u);
   ASSERT_EQ(frontiers[0].cells.size(), 3u);
   for (const cv::Point& cell : frontiers[0].cells) EXPECT_EQ(cell.x, 11);
+  // Behind the wall lies unknown space, but the frontier itself only faces the wall.
+  EXPECT_FALSE(frontiers[0].borders_unknown);
+  EXPECT_GT(frontiers[0].unseen_area_m2, 1.0);
   options.precise_min_disparity = 0.0f;
   EXPECT_TRUE(findFrontiers(NavigationGrid(cells.grid(), {}, options), 1).empty());
 }
