@@ -642,7 +642,11 @@ FrontierExplorer::Command FrontierExplorer::drive(const mrpt::poses::CPose2D& po
   grid_->cellAt(pose.x(), pose.y(), col, row);
   const double room = grid_->obstacleDistance(col, row) - planner_options_.body_radius_m;
   const double room_factor = std::max(0.3, std::min(1.0, room / (options_.repulsion_distance_m + 1e-9)));
-  double speed = options_.max_speed_mps * room_factor * (1.0 - 0.7 * std::abs(error) / options_.turn_in_place_rad);
+  // Slower with the square of the heading error: the carrot on a grid path swings 5-15 degrees
+  // from cell to cell, which in proportion cost a third of the speed (top speed 1.27-1.48 m/s
+  // over the office seeds); at the turn-in-place angle it is 0.3 of full speed as before.
+  const double heading_share = error / options_.turn_in_place_rad;
+  double speed = options_.max_speed_mps * room_factor * (1.0 - 0.7 * heading_share * heading_share);
   speed = std::min(speed, std::sqrt(2.0 * options_.braking_deceleration * remaining));
   return {speed, clampAbs(options_.heading_gain * error, options_.max_turn_rate)};
 }
