@@ -20,9 +20,9 @@ constexpr const char* kUsage =
     "(PREFIX.path.txt odometry, PREFIX.truth.txt true poses, 't x y phi' per frame), the navigation\n"
     "trace PREFIX.navlog.csv (and PREFIX.reactivenavlog for MRPT's navlog-viewer), the map with the\n"
     "path PREFIX.path.png, the explorer's last plan PREFIX.plan.png and PREFIX.stats.json\n"
-    "(coverage of the reachable free space against the world's ground truth, distance, times,\n"
-    "collisions and what they touched, stop reason). --record writes the frames with odometry as\n"
-    "a rawlog (+ OUT.gt.txt) that 'stereonav map' replays to the same map.\n"
+    "(coverage of the reachable free space against the world's ground truth: mapped free, and seen\n"
+    "at all; distance, times, collisions and what they touched, stop reason). --record writes the\n"
+    "frames with odometry as a rawlog (+ OUT.gt.txt) that 'stereonav map' replays to the same map.\n"
     "--seed N seeds the noise and moves the start up to 0.5 m with any heading; --max-time\n"
     "overrides [simulation] max_duration_s.\n";
 
