@@ -2,27 +2,31 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
+
 #include "../simulator/world_text.h"
 #include "test_grids.h"
 
 namespace stereonav {
 namespace {
 
-// A 2 m x 2 m world at 0.1 m with a 0.4 m x 0.4 m box in the middle (cells 8..11 both ways). A
-// body of radius 0.25 m has its centre at least 2.5 cells from any obstacle cell's centre (the
-// border counts as one), so from the third cell in, and sweeps cell centres up to 2.5 cells away:
-// every free cell but the world's four corners (2.8 cells from the nearest place for the centre),
-// 400 - 16 - 4. (With a radius of a whole number of cells a cell's centre lies exactly on the
-// body's edge and rounding decides.)
-GroundTruthMap boxWorld() {
+// The ground truth of a world given as ini text, at 0.1 m, without a margin.
+GroundTruthMap truthAtTenCentimetres(const std::string& world_text) {
   GroundTruthMapOptions options;
   options.resolution_m = 0.1;
   options.margin_m = 0.0;
-  return GroundTruthMap(worldFromText("[world]\nbounds = 0 0 2 2\n[box.b]\ncenter = 1 1\nsize = 0.4 0.4\n"), options);
+  return GroundTruthMap(worldFromText(world_text), options);
 }
 
 TEST(ExplorationCoverageTest, CountsTrueFreeCellsTheMapCallsFreeAndThoseItHasSeenAtAll) {
-  const GroundTruthMap truth = boxWorld();
+  // A 2 m x 2 m world at 0.1 m with a 0.4 m x 0.4 m box in the middle (cells 8..11 both ways). A
+  // body of radius 0.25 m has its centre at least 2.5 cells from any obstacle cell's centre (the
+  // border counts as one), so from the third cell in, and sweeps cell centres up to 2.5 cells away:
+  // every free cell but the world's four corners (2.8 cells from the nearest place for the centre),
+  // 400 - 16 - 4. (With a radius of a whole number of cells a cell's centre lies exactly on the
+  // body's edge and rounding decides.)
+  const GroundTruthMap truth =
+      truthAtTenCentimetres("[world]\nbounds = 0 0 2 2\n[box.b]\ncenter = 1 1\nsize = 0.4 0.4\n");
   TestGrid map(20, 20);
   // The west half mapped free (the box's cells there too: they are not free space, so they do
   // not count), the next five columns mapped occupied, wrongly but for the box's cells.
@@ -43,10 +47,7 @@ TEST(ExplorationCoverageTest, FloorTheBodyCannotReachDoesNotCount) {
   // A wall at x 1.45 .. 1.55 fills cells 14 and 15 and leaves a strip of 4 cells east of it, too
   // narrow for a body 0.5 m across: only the 14 columns west of the wall are reachable, less
   // their four corners.
-  GroundTruthMapOptions options;
-  options.resolution_m = 0.1;
-  options.margin_m = 0.0;
-  const GroundTruthMap truth(worldFromText("[world]\nbounds = 0 0 2 2\n[wall.w]\npoints = 1.5 0; 1.5 2\n"), options);
+  const GroundTruthMap truth = truthAtTenCentimetres("[world]\nbounds = 0 0 2 2\n[wall.w]\npoints = 1.5 0; 1.5 2\n");
   TestGrid map(20, 20);
   map.free(0, 0, 19, 19);
   const ExplorationCoverage coverage = measureCoverage(truth, map.grid(), 0.25, 0.5, 0.5);

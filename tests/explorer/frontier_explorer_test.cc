@@ -215,25 +215,25 @@ TEST(FrontierExplorerTest, WhenNothingElseIsReachableItPlansPastALoneSpeckInAPas
   EXPECT_LT(stopped.pose_.x, 2.0);
 }
 
+// Where the explorer heads first from `start` with the pocket penalty at `penalty_m`.
+cv::Point2d firstTarget(const TestGrid& cells, const mrpt::math::TPose2D& start, double penalty_m) {
+  ExplorerOptions options = testOptions();
+  options.pocket_penalty_m = penalty_m;
+  FrontierExplorer explorer(options);
+  KinematicRobot robot(start);
+  explorer.updateMap(cells.grid(), mrpt::poses::CPose2D(robot.pose_));
+  EXPECT_TRUE(explorer.controlStep(robot));
+  EXPECT_TRUE(explorer.status().has_target);
+  return {explorer.status().target_x, explorer.status().target_y};
+}
+
 TEST(FrontierExplorerTest, HeadsForTheRestOfTheBuildingBeforeAPocketNearby) {
   // A walled 6 m x 3 m room with a 0.4 m x 0.4 m unknown pocket 0.5 m from the robot (a desk's
   // shadow) and a door in its far east wall to unknown space, 5 m away.
   TestGrid cells(80, 40);
   cells.occupied(0, 0, 61, 31).free(1, 1, 60, 30).unknown(15, 14, 18, 17).unknown(61, 12, 61, 18);
-  for (const double penalty : {10.0, 0.0}) {
-    ExplorerOptions options = testOptions();
-    options.pocket_penalty_m = penalty;
-    FrontierExplorer explorer(options);
-    KinematicRobot robot({1.0, 1.55, 0.0});
-    explorer.updateMap(cells.grid(), mrpt::poses::CPose2D(robot.pose_));
-    ASSERT_TRUE(explorer.controlStep(robot));
-    ASSERT_TRUE(explorer.status().has_target);
-    if (penalty > 0.0) {
-      EXPECT_GT(explorer.status().target_x, 5.0);
-    } else {
-      EXPECT_LT(explorer.status().target_x, 2.5);
-    }
-  }
+  EXPECT_GT(firstTarget(cells, {1.0, 1.55, 0.0}, 10.0).x, 5.0);
+  EXPECT_LT(firstTarget(cells, {1.0, 1.55, 0.0}, 0.0).x, 2.5);
 }
 
 TEST(FrontierExplorerTest, HeadsForUnknownSpaceBeforeAWallSeenOnlyFromFar) {
@@ -243,21 +243,10 @@ TEST(FrontierExplorerTest, HeadsForUnknownSpaceBeforeAWallSeenOnlyFromFar) {
   // looking through the door shows new floor.
   TestGrid cells(80, 40);
   cells.occupied(0, 4, 61, 35).free(1, 5, 60, 34).tag(8, 4, 14, 4, 2.0f).unknown(61, 16, 61, 22);
-  for (const double penalty : {10.0, 0.0}) {
-    ExplorerOptions options = testOptions();
-    options.pocket_penalty_m = penalty;
-    FrontierExplorer explorer(options);
-    KinematicRobot robot({1.0, 1.2, -1.57});
-    explorer.updateMap(cells.grid(), mrpt::poses::CPose2D(robot.pose_));
-    ASSERT_TRUE(explorer.controlStep(robot));
-    ASSERT_TRUE(explorer.status().has_target);
-    if (penalty > 0.0) {
-      EXPECT_GT(explorer.status().target_x, 5.0);
-    } else {
-      EXPECT_LT(explorer.status().target_x, 2.0);
-      EXPECT_LT(explorer.status().target_y, 1.2);
-    }
-  }
+  EXPECT_GT(firstTarget(cells, {1.0, 1.2, -1.57}, 10.0).x, 5.0);
+  const cv::Point2d unpenalised = firstTarget(cells, {1.0, 1.2, -1.57}, 0.0);
+  EXPECT_LT(unpenalised.x, 2.0);
+  EXPECT_LT(unpenalised.y, 1.2);
 }
 
 // A walled 4 m x 4 m room, known free but for an unknown 0.3 m x 0.3 m pocket (under a table
