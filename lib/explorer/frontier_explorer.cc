@@ -182,10 +182,9 @@ void FrontierExplorer::replan() {
         }
       }
     }
-    const double seed_cost = (is_target ? 0.0 : options_.target_switch_penalty_m) +
-                             (frontiers_[i].unseen_area_m2 < options_.pocket_area_m2 || !frontiers_[i].borders_unknown
-                                  ? options_.pocket_penalty_m
-                                  : 0.0);
+    const bool waits = frontiers_[i].unseen_area_m2 < options_.pocket_area_m2 || !frontiers_[i].borders_unknown;
+    const double seed_cost =
+        (is_target ? 0.0 : options_.target_switch_penalty_m) + (waits ? options_.pocket_penalty_m : 0.0);
     for (const cv::Point& cell : frontiers_[i].cells) {
       for (int dr = -reach; dr <= reach; ++dr) {
         for (int dc = -reach; dc <= reach; ++dc) {

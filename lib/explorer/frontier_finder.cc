@@ -51,27 +51,26 @@ cv::Mat1i openingRegions(const NavigationGrid& grid, std::vector<int>& areas) {
   return labels;
 }
 
-// The largest area (cells) of the opening regions a free cell borders (4-neighbours), 0 if none:
-// then it is no frontier cell.
-int bordersOpening(const NavigationGrid& grid, const cv::Mat1i& regions, const std::vector<int>& areas, int col, int row) {
-  if (grid.cellClass(col, row) != NavigationGrid::kFree) return 0;
-  static const int kNeighbours[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
-  int largest = 0;
-  for (const auto& offset : kNeighbours) {
-    const int c = col + offset[0], r = row + offset[1];
-    if (grid.contains(c, r) && regions(r, c) != 0) largest = std::max(largest, areas[static_cast<size_t>(regions(r, c))]);
-  }
-  return largest;
-}
+// What a free cell borders through its 4-neighbours: the largest area (cells) of the opening
+// regions among them (0 if none: then it is no frontier cell), and whether one of them is an
+// unknown cell rather than an obstacle seen from far.
+struct OpeningBorder {
+  int area = 0;
+  bool unknown = false;
+};
 
-// Whether a frontier cell's unresolved 4-neighbours include an unknown cell of an opening.
-bool bordersUnknown(const NavigationGrid& grid, const cv::Mat1i& regions, int col, int row) {
+OpeningBorder openingBorder(const NavigationGrid& grid, const cv::Mat1i& regions, const std::vector<int>& areas,
+                            int col, int row) {
+  OpeningBorder border;
+  if (grid.cellClass(col, row) != NavigationGrid::kFree) return border;
   static const int kNeighbours[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
   for (const auto& offset : kNeighbours) {
     const int c = col + offset[0], r = row + offset[1];
-    if (grid.contains(c, r) && regions(r, c) != 0 && grid.cellClass(c, r) == NavigationGrid::kUnknown) return true;
+    if (!grid.contains(c, r) || regions(r, c) == 0) continue;
+    border.area = std::max(border.area, areas[static_cast<size_t>(regions(r, c))]);
+    border.unknown = border.unknown || grid.cellClass(c, r) == NavigationGrid::kUnknown;
   }
-  return false;
+  return border;
 }
 
 }  // namespace
@@ -79,10 +78,15 @@ bool bordersUnknown(const NavigationGrid& grid, const cv::Mat1i& regions, int co
 std::vector<Frontier> findFrontiers(const NavigationGrid& grid, int min_cells) {
   std::vector<int> areas;
   const cv::Mat1i regions = openingRegions(grid, areas);
-  // Per cell: the area it borders, 0 if it is no frontier cell.
+  // Per cell: the area it borders (0 if it is no frontier cell) and whether it faces unknown.
   cv::Mat1i bordered(grid.height(), grid.width(), 0);
+  cv::Mat1b faces_unknown(grid.height(), grid.width(), uint8_t{0});
   for (int row = 0; row < grid.height(); ++row) {
-    for (int col = 0; col < grid.width(); ++col) bordered(row, col) = bordersOpening(grid, regions, areas, col, row);
+    for (int col = 0; col < grid.width(); ++col) {
+      const OpeningBorder border = openingBorder(grid, regions, areas, col, row);
+      bordered(row, col) = border.area;
+      faces_unknown(row, col) = border.unknown;
+    }
   }
   cv::Mat1b is_frontier = bordered > 0;
   const double cell_area = grid.resolution() * grid.resolution();
@@ -99,7 +103,7 @@ std::vector<Frontier> findFrontiers(const NavigationGrid& grid, int min_cells) {
         stack.pop_back();
         frontier.cells.push_back(cell);
         frontier.unseen_area_m2 = std::max(frontier.unseen_area_m2, bordered(cell.y, cell.x) * cell_area);
-        frontier.borders_unknown = frontier.borders_unknown || bordersUnknown(grid, regions, cell.x, cell.y);
+        frontier.borders_unknown = frontier.borders_unknown || faces_unknown(cell.y, cell.x);
         for (int dr = -1; dr <= 1; ++dr) {
           for (int dc = -1; dc <= 1; ++dc) {
             const int c = cell.x + dc, r = cell.y + dr;
