@@ -30,8 +30,9 @@ DisparityTaggedGrid fromMrptOccupancyGrid(const mrpt::maps::COccupancyGridMap2D&
   }
   const GridFrame frame{mrpt_grid.getXMin(), mrpt_grid.getYMin(), mrpt_grid.getResolution()};
   std::vector<float> tags(occupancy.size(), DisparityTaggedGrid::kNoTag);
+  std::vector<uint8_t> close_free(occupancy.size(), 0);
   DisparityTaggedGrid grid(GridLimits{}, scale);
-  grid.assign(frame, width, height, std::move(occupancy), std::move(tags));
+  grid.assign(frame, width, height, std::move(occupancy), std::move(tags), std::move(close_free));
   return grid;
 }
 

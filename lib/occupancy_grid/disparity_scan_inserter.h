@@ -23,6 +23,13 @@ namespace stereonav {
 // CLEAR never changes tags: a tag only counts while its cell still holds obstacle evidence, so
 // once clearing has brought G back to unknown or below the tag is inert and a moved obstacle no
 // longer blocks new readings. CLEAR is applied even when OCC is skipped.
+//
+// Free-space preservation (GridUpdateOptions::free_preservation_range_m = R > 0) carries the
+// same hypothesis-explanation argument over to free space: a cell CLEAR reached within R of the
+// camera was seen free from close, so an obstacle hypothesised from farther than R (a region
+// metres deep, or a ghost match) is not there but in the rest of its region. Such a reading's
+// OCC update spares those cells. An OCC update from within R is applied as usual and makes its
+// cells ordinary again, so an obstacle that moves in is mapped once it is seen from close.
 class DisparityScanInserter {
  public:
   DisparityScanInserter(const SensorModelOptions& sensor_model, const GridUpdateOptions& update,
@@ -34,11 +41,12 @@ class DisparityScanInserter {
               const mrpt::poses::CPose2D& robot_pose, DisparityTaggedGrid& grid);
 
  private:
-  void clearCells(const CellSpan* begin, const CellSpan* end, DisparityTaggedGrid& grid) const;
+  void clearCells(const CellSpan* begin, const CellSpan* end, double camera_col,
+                  double camera_row, DisparityTaggedGrid& grid) const;
   bool explainedByBetterEvidence(const CellSpan* begin, const CellSpan* end, float disparity,
                                  const DisparityTaggedGrid& grid) const;
   void occupyCells(const CellSpan* begin, const CellSpan* end, float disparity,
-                   DisparityTaggedGrid& grid) const;
+                   bool spare_close_free, DisparityTaggedGrid& grid) const;
 
   StereoSensorModel model_;
   GridUpdateOptions update_;

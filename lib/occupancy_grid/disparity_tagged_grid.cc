@@ -36,6 +36,7 @@ void DisparityTaggedGrid::reset(const GridLimits& limits) {
   height_ = std::max(1, static_cast<int>(latticeAbove(limits.max_y, r) - first_row));
   occupancy_.assign(static_cast<size_t>(width_) * height_, scale_.unknown());
   tags_.assign(occupancy_.size(), kNoTag);
+  close_free_.assign(occupancy_.size(), 0);
 }
 
 bool DisparityTaggedGrid::cellAt(double x, double y, int& col, int& row) const {
@@ -63,10 +64,12 @@ void DisparityTaggedGrid::growToInclude(const WorldBounds& bounds, double margin
   const int new_height = height_ + grow_down + grow_up;
   std::vector<uint8_t> occupancy(static_cast<size_t>(new_width) * new_height, scale_.unknown());
   std::vector<float> tags(occupancy.size(), kNoTag);
+  std::vector<uint8_t> close_free(occupancy.size(), 0);
   for (int row = 0; row < height_; ++row) {
     const size_t to = static_cast<size_t>(row + grow_down) * new_width + grow_left;
     std::copy_n(occupancyRow(row), width_, occupancy.begin() + to);
     std::copy_n(tagRow(row), width_, tags.begin() + to);
+    std::copy_n(closeFreeRow(row), width_, close_free.begin() + to);
   }
   frame_.origin_x -= grow_left * r;
   frame_.origin_y -= grow_down * r;
@@ -74,12 +77,15 @@ void DisparityTaggedGrid::growToInclude(const WorldBounds& bounds, double margin
   height_ = new_height;
   occupancy_ = std::move(occupancy);
   tags_ = std::move(tags);
+  close_free_ = std::move(close_free);
 }
 
 void DisparityTaggedGrid::assign(const GridFrame& frame, int width, int height,
-                                 std::vector<uint8_t> occupancy, std::vector<float> tags) {
+                                 std::vector<uint8_t> occupancy, std::vector<float> tags,
+                                 std::vector<uint8_t> close_free) {
   const size_t cells = static_cast<size_t>(width) * static_cast<size_t>(height);
-  if (width <= 0 || height <= 0 || occupancy.size() != cells || tags.size() != cells) {
+  if (width <= 0 || height <= 0 || occupancy.size() != cells || tags.size() != cells ||
+      close_free.size() != cells) {
     throw std::invalid_argument("DisparityTaggedGrid::assign: layer sizes do not match the grid");
   }
   frame_ = frame;
@@ -87,6 +93,7 @@ void DisparityTaggedGrid::assign(const GridFrame& frame, int width, int height,
   height_ = height;
   occupancy_ = std::move(occupancy);
   tags_ = std::move(tags);
+  close_free_ = std::move(close_free);
 }
 
 }  // namespace stereonav

@@ -10,7 +10,8 @@ namespace stereonav {
 
 // The paper's occupancy grid with its second layer (sections 3.4 and 4.3): per cell the
 // occupancy value G (see OccupancyScale) and the disparity tag, the disparity of the reading
-// that last added OCC evidence to the cell (kNoTag if none did). Cell (col, row) covers
+// that last added OCC evidence to the cell (kNoTag if none did). A third layer marks the cells
+// seen free from close (see free-space preservation in DisparityScanInserter). Cell (col, row) covers
 // [min_x + col r, min_x + (col+1) r) x [min_y + row r, ...), rows going up in y like MRPT's
 // COccupancyGridMap2D, so conversions copy rows one to one. Storage only: the update rule lives
 // in DisparityScanInserter.
@@ -38,23 +39,27 @@ class DisparityTaggedGrid {
 
   uint8_t occupancy(int col, int row) const { return occupancy_[index(col, row)]; }
   float disparityTag(int col, int row) const { return tags_[index(col, row)]; }
+  bool closeFree(int col, int row) const { return close_free_[index(col, row)] != 0; }
   uint8_t* occupancyRow(int row) { return &occupancy_[index(0, row)]; }
   float* tagRow(int row) { return &tags_[index(0, row)]; }
   const uint8_t* occupancyRow(int row) const { return &occupancy_[index(0, row)]; }
   const float* tagRow(int row) const { return &tags_[index(0, row)]; }
+  uint8_t* closeFreeRow(int row) { return &close_free_[index(0, row)]; }
+  const uint8_t* closeFreeRow(int row) const { return &close_free_[index(0, row)]; }
 
   // Grows the grid by whole cells on the sides where `bounds` sticks out, by enough to cover it
   // plus `margin_m`; existing cells keep their world coordinates and values. Never shrinks.
   void growToInclude(const WorldBounds& bounds, double margin_m);
 
-  // Back to the initial limits, all cells unknown and untagged.
+  // Back to the initial limits, all cells unknown, untagged and not close-free.
   void reset(const GridLimits& limits);
 
   // Direct construction from stored layers (deserialisation); sizes must match.
   void assign(const GridFrame& frame, int width, int height, std::vector<uint8_t> occupancy,
-              std::vector<float> tags);
+              std::vector<float> tags, std::vector<uint8_t> close_free);
   const std::vector<uint8_t>& occupancyLayer() const { return occupancy_; }
   const std::vector<float>& tagLayer() const { return tags_; }
+  const std::vector<uint8_t>& closeFreeLayer() const { return close_free_; }
 
  private:
   size_t index(int col, int row) const {
@@ -67,6 +72,7 @@ class DisparityTaggedGrid {
   int height_ = 0;
   std::vector<uint8_t> occupancy_;
   std::vector<float> tags_;
+  std::vector<uint8_t> close_free_;
 };
 
 }  // namespace stereonav

@@ -37,6 +37,11 @@ GridUpdateOptions loadGridUpdateOptions(IniSection& section) {
   scale.occupied_above = section.getInt("occupied_above", scale.occupied_above);
   options.accuracy_preservation =
       section.getBool("accuracy_preservation", options.accuracy_preservation);
+  options.free_preservation_range_m =
+      section.getDouble("free_preservation_range_m", options.free_preservation_range_m);
+  if (!(options.free_preservation_range_m >= 0.0)) {
+    fail(section, "free_preservation_range_m", "must not be negative (0 = off)");
+  }
   if (scale.g_min < 0 || scale.g_min >= 255) fail(section, "g_min", "must be in 0..254");
   if (scale.g_max <= scale.g_min || scale.g_max > 255) {
     fail(section, "g_max", "must be in g_min+1..255");

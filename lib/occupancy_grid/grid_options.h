@@ -51,9 +51,14 @@ struct GridUpdateOptions {
   // Skip a reading's OCC update when its region already holds obstacle evidence from a higher
   // disparity (a closer, more precise reading); see DisparityScanInserter.
   bool accuracy_preservation = true;
+  // > 0: cells cleared from within this range (metres) of the camera are spared by OCC updates
+  // of readings from farther (depth f B / d beyond it); see DisparityScanInserter. 0 = off, the
+  // paper's rule alone.
+  double free_preservation_range_m = 0.0;
 };
 
-// Keys: update_step, g_min, g_max, free_below, occupied_above, accuracy_preservation.
+// Keys: update_step, g_min, g_max, free_below, occupied_above, accuracy_preservation,
+// free_preservation_range_m.
 GridUpdateOptions loadGridUpdateOptions(IniSection& section);
 
 }  // namespace stereonav

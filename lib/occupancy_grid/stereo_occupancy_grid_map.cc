@@ -78,8 +78,9 @@ void CStereoOccupancyGridMap::getVisualizationInto(mrpt::opengl::CSetOfObjects& 
   toMrptOccupancyGrid(grid_).getVisualizationInto(o);
 }
 
-// Version 1 adds the sensor model's disparity_uncertainty_px and keep_obstacle_borders.
-uint8_t CStereoOccupancyGridMap::serializeGetVersion() const { return 1; }
+// Version 1 adds the sensor model's disparity_uncertainty_px and keep_obstacle_borders; version 2
+// free_preservation_range_m and the close-free layer (older maps load with it off and empty).
+uint8_t CStereoOccupancyGridMap::serializeGetVersion() const { return 2; }
 
 void CStereoOccupancyGridMap::serializeTo(mrpt::serialization::CArchive& out) const {
   const GridLimits& limits = options_.limits;
@@ -97,12 +98,15 @@ void CStereoOccupancyGridMap::serializeTo(mrpt::serialization::CArchive& out) co
   out.WriteBuffer(grid_.occupancyLayer().data(), grid_.occupancyLayer().size());
   out.WriteBufferFixEndianness(grid_.tagLayer().data(), grid_.tagLayer().size());
   out << is_empty_;
+  out << update.free_preservation_range_m;
+  out.WriteBuffer(grid_.closeFreeLayer().data(), grid_.closeFreeLayer().size());
 }
 
 void CStereoOccupancyGridMap::serializeFrom(mrpt::serialization::CArchive& in, uint8_t version) {
   switch (version) {
     case 0:
-    case 1: {
+    case 1:
+    case 2: {
       StereoGridMapOptions options;
       GridLimits& limits = options.limits;
       GridUpdateOptions& update = options.update;
@@ -128,9 +132,15 @@ void CStereoOccupancyGridMap::serializeFrom(mrpt::serialization::CArchive& in, u
       in.ReadBuffer(occupancy.data(), occupancy.size());
       in.ReadBufferFixEndianness(tags.data(), tags.size());
       in >> is_empty_;
+      std::vector<uint8_t> close_free(occupancy.size(), 0);
+      if (version >= 2) {
+        in >> update.free_preservation_range_m;
+        in.ReadBuffer(close_free.data(), close_free.size());
+      }
       options_ = options;
       grid_ = DisparityTaggedGrid(options.limits, options.update.scale);
-      grid_.assign(frame, width, height, std::move(occupancy), std::move(tags));
+      grid_.assign(frame, width, height, std::move(occupancy), std::move(tags),
+                   std::move(close_free));
       inserter_ = DisparityScanInserter(options.sensor_model, options.update,
                                         options.limits.growth_margin_m);
       break;
@@ -161,7 +171,8 @@ void CStereoOccupancyGridMap::TMapDefinition::dumpToTextStream_map_specific(
       << " growth_margin_m=" << l.growth_margin_m << "\n"
       << "update_step=" << u.update_step << " g_min=" << u.scale.g_min << " g_max=" << u.scale.g_max
       << " free_below=" << u.scale.free_below << " occupied_above=" << u.scale.occupied_above
-      << " accuracy_preservation=" << u.accuracy_preservation << "\n"
+      << " accuracy_preservation=" << u.accuracy_preservation
+      << " free_preservation_range_m=" << u.free_preservation_range_m << "\n"
       << "max_range_m=" << options.sensor_model.max_range_m
       << " clear_invalid_columns_to_m=" << options.sensor_model.clear_invalid_columns_to_m
       << " disparity_uncertainty_px=" << options.sensor_model.disparity_uncertainty_px

@@ -132,5 +132,52 @@ TEST(DisparityScanInserterTest, ClearedEvidenceNoLongerExplainsReadings) {
   EXPECT_EQ(tagAt(f.grid, 2, 0), 0.9f);
 }
 
+bool closeFreeAt(const DisparityTaggedGrid& grid, int x, int y) {
+  int col = 0, row = 0;
+  return grid.cellAt(0.5 + x, 0.5 + y, col, row) && grid.closeFree(col, row);
+}
+
+// Free-space preservation within R = 2.5 m. Accuracy preservation is off so that only the new
+// rule decides. d = 1.0 from X = 0: CLEAR ends at depth 4/1.5 = 2.67 (X = 0, 1, 2 on the axis),
+// OCC covers X = 3 .. 7. d = 0.7 from X = -6: a far reading (depth 4/1.2 = 3.33 > R) whose OCC
+// region covers X = -2 .. 3 (it ends at the sensor model's 10 m).
+TEST(DisparityScanInserterTest, FreePreservationSparesCellsSeenFreeFromCloseOnly) {
+  GridUpdateOptions update;
+  update.accuracy_preservation = false;
+  update.free_preservation_range_m = 2.5;
+  Fixture f(update);
+  f.insert(1.0f, robotAt(0, 0));
+  EXPECT_TRUE(closeFreeAt(f.grid, 1, 0));
+  EXPECT_TRUE(closeFreeAt(f.grid, 2, 0));
+  EXPECT_FALSE(closeFreeAt(f.grid, 3, 0));  // OCC, and beyond R anyway
+
+  f.insert(0.7f, robotAt(-6, 0));
+  EXPECT_EQ(occupancyAt(f.grid, 1, 0), 108);   // seen free from 1 m: spared
+  EXPECT_EQ(occupancyAt(f.grid, 2, 0), 108);   // from 2 m: spared
+  EXPECT_EQ(occupancyAt(f.grid, 3, 0), 168);   // obstacle evidence: applied
+  EXPECT_EQ(occupancyAt(f.grid, -1, 0), 148);  // never seen: applied
+  EXPECT_EQ(tagAt(f.grid, 1, 0), DisparityTaggedGrid::kNoTag);
+
+  // d = 2.0 from X = -1 (depth 1.6 .. 2.67 < R): an obstacle seen from close at X = 1 is
+  // mapped, and the cell is no longer spared from far readings.
+  f.insert(2.0f, robotAt(-1, 0));
+  EXPECT_EQ(occupancyAt(f.grid, 1, 0), 128);
+  EXPECT_FALSE(closeFreeAt(f.grid, 1, 0));
+  f.insert(0.7f, robotAt(-6, 0));
+  EXPECT_EQ(occupancyAt(f.grid, 1, 0), 148);
+  EXPECT_EQ(occupancyAt(f.grid, 2, 0), 108);
+}
+
+TEST(DisparityScanInserterTest, WithoutFreePreservationAFarReadingCoversFloorSeenFromClose) {
+  GridUpdateOptions update;
+  update.accuracy_preservation = false;
+  Fixture f(update);
+  f.insert(1.0f, robotAt(0, 0));
+  f.insert(0.7f, robotAt(-6, 0));
+  EXPECT_EQ(occupancyAt(f.grid, 1, 0), 128);
+  EXPECT_EQ(occupancyAt(f.grid, 2, 0), 128);
+  EXPECT_FALSE(closeFreeAt(f.grid, 1, 0));
+}
+
 }  // namespace
 }  // namespace stereonav

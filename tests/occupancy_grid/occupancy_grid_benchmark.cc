@@ -110,6 +110,7 @@ void BM_StereoOccupancyGridInsertDisparityScan(benchmark::State& state) {
   StereoGridMapOptions options;
   options.limits.resolution = kResolution;
   options.update.accuracy_preservation = state.range(0) != 0;
+  options.update.free_preservation_range_m = static_cast<double>(state.range(1));
   CStereoOccupancyGridMap map(options);
   const mrpt::poses::CPose3D robot;
   for (auto _ : state) {
@@ -119,9 +120,10 @@ void BM_StereoOccupancyGridInsertDisparityScan(benchmark::State& state) {
   state.counters["cells"] = map.grid().width() * map.grid().height();
 }
 BENCHMARK(BM_StereoOccupancyGridInsertDisparityScan)
-    ->ArgName("accuracy_preservation")
-    ->Arg(1)
-    ->Arg(0)
+    ->ArgNames({"accuracy_preservation", "free_preservation_range_m"})
+    ->Args({1, 0})
+    ->Args({0, 0})
+    ->Args({1, 2})
     ->ComputeStatistics("min", fastest)
     ->Unit(benchmark::kMicrosecond);
 

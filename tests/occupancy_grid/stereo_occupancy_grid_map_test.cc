@@ -73,9 +73,10 @@ TEST(CStereoOccupancyGridMapTest, DisparityScanSourcesLetOtherObservationsIn) {
   EXPECT_FALSE(map.insertObservation(laser, pose3D(testing::robotAt(0, 0))));
 }
 
-TEST(CStereoOccupancyGridMapTest, SerialisesWithItsOptionsAndBothLayers) {
+TEST(CStereoOccupancyGridMapTest, SerialisesWithItsOptionsAndAllLayers) {
   StereoGridMapOptions options = unitOptions();
   options.update.update_step = 30;
+  options.update.free_preservation_range_m = 1.5;
   options.sensor_model.max_range_m = 7.5;
   options.sensor_model.disparity_uncertainty_px = 0.3;
   options.sensor_model.keep_obstacle_borders = true;
@@ -93,8 +94,14 @@ TEST(CStereoOccupancyGridMapTest, SerialisesWithItsOptionsAndBothLayers) {
   EXPECT_EQ(copy->options().sensor_model.max_range_m, 7.5);
   EXPECT_EQ(copy->options().sensor_model.disparity_uncertainty_px, 0.3);
   EXPECT_TRUE(copy->options().sensor_model.keep_obstacle_borders);
+  EXPECT_EQ(copy->options().update.free_preservation_range_m, 1.5);
   EXPECT_EQ(copy->grid().occupancyLayer(), map.grid().occupancyLayer());
   EXPECT_EQ(copy->grid().tagLayer(), map.grid().tagLayer());
+  EXPECT_EQ(copy->grid().closeFreeLayer(), map.grid().closeFreeLayer());
+  // CLEAR within 1.5 m of the camera: X = 0, 1 on the reading's axis.
+  int col = 0, row = 0;
+  ASSERT_TRUE(copy->grid().cellAt(1.5, 0.5, col, row));
+  EXPECT_TRUE(copy->grid().closeFree(col, row));
   EXPECT_EQ(copy->grid().minX(), map.grid().minX());
   // The copy keeps mapping with the same rule: K = 30 on top of 128 + 30.
   copy->insertObservation(*unitObservation(1.5f), pose3D(testing::robotAt(0, 0)));
