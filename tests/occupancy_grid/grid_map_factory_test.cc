@@ -37,7 +37,7 @@ TEST(GridMapFactoryTest, LoadsTheWholeGridSection) {
   const GridMapOptions options = load(
       "[grid]\nmodel = linear\nresolution = 0.1\nmin_x = -4\nupdate_step = 15\n"
       "free_below = 40\noccupied_above = 160\naccuracy_preservation = false\n"
-      "clear_invalid_columns_to_m = 2.5\n");
+      "free_preservation_range_m = 1.5\nclear_invalid_columns_to_m = 2.5\n");
   EXPECT_EQ(options.model, GridModel::kLinear);
   EXPECT_EQ(options.stereo.limits.resolution, 0.1);
   EXPECT_EQ(options.stereo.limits.min_x, -4.0);
@@ -45,6 +45,7 @@ TEST(GridMapFactoryTest, LoadsTheWholeGridSection) {
   EXPECT_EQ(options.stereo.update.scale.free_below, 40);
   EXPECT_EQ(options.stereo.update.scale.occupied_above, 160);
   EXPECT_FALSE(options.stereo.update.accuracy_preservation);
+  EXPECT_EQ(options.stereo.update.free_preservation_range_m, 1.5);
   EXPECT_EQ(options.stereo.sensor_model.clear_invalid_columns_to_m, 2.5);
 }
 
@@ -64,6 +65,9 @@ TEST(GridMapFactoryTest, BadValuesAndUnknownKeysAreOneLineErrorsNamingTheKey) {
             std::string::npos);
   EXPECT_NE(message("[grid]\nresolution = 0\n").find("[grid] resolution"), std::string::npos);
   EXPECT_NE(message("[grid]\nmax_x = -20\n").find("[grid] max_x"), std::string::npos);
+  EXPECT_NE(message("[grid]\nfree_preservation_range_m = -1\n").find(
+                "[grid] free_preservation_range_m"),
+            std::string::npos);
 }
 
 TEST(GridMapFactoryTest, EitherModelTakesTheSameSensoryFrame) {
