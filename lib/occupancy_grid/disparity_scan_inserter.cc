@@ -90,6 +90,8 @@ void DisparityScanInserter::occupyCells(const CellSpan* begin, const CellSpan* e
                                         float disparity, bool spare_close_free,
                                         DisparityTaggedGrid& grid) const {
   const int g_max = update_.scale.g_max, step = update_.update_step;
+  // With preservation off no cell is ever marked, so there is nothing to unmark.
+  const bool unmark_close_free = update_.free_preservation_range_m > 0.0;
   for (const CellSpan* span = begin; span != end; ++span) {
     const int col_begin = span->col_begin, col_end = span->col_end;
     uint8_t* occupancy = grid.occupancyRow(span->row);
@@ -106,7 +108,7 @@ void DisparityScanInserter::occupyCells(const CellSpan* begin, const CellSpan* e
         occupancy[col] = static_cast<uint8_t>(std::min(occupancy[col] + step, g_max));
         tags[col] = disparity;
       }
-      if (update_.free_preservation_range_m > 0.0) {
+      if (unmark_close_free) {
         std::fill(close_free + col_begin, close_free + col_end, uint8_t{0});
       }
     }

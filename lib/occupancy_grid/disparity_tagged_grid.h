@@ -11,7 +11,7 @@ namespace stereonav {
 // The paper's occupancy grid with its second layer (sections 3.4 and 4.3): per cell the
 // occupancy value G (see OccupancyScale) and the disparity tag, the disparity of the reading
 // that last added OCC evidence to the cell (kNoTag if none did). A third layer marks the cells
-// seen free from close (see free-space preservation in DisparityScanInserter). Cell (col, row) covers
+// seen free from close (free-space preservation, see DisparityScanInserter). Cell (col, row) covers
 // [min_x + col r, min_x + (col+1) r) x [min_y + row r, ...), rows going up in y like MRPT's
 // COccupancyGridMap2D, so conversions copy rows one to one. Storage only: the update rule lives
 // in DisparityScanInserter.
