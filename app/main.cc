@@ -25,6 +25,8 @@ const Command kCommands[] = {
      stereonav::app::runExploreCommand},
     {"score", "score an occupancy map (ROS map_server YAML) against a ground-truth map",
      stereonav::app::runScoreCommand},
+    {"config", "print every ini section and key the commands accept (docs/configuration.md's skeleton)",
+     stereonav::app::runConfigCommand},
 };
 
 void printUsage(std::ostream& out) {

@@ -1,17 +1,42 @@
 #include "common/ini_section.h"
 
+#include "common/ini_key_recorder.h"
+
 #include <algorithm>
+#include <sstream>
 #include <vector>
 
 namespace stereonav {
+namespace {
+
+// Tells the active IniKeyRecorder, if any, that `key` of `section` was read.
+void recordRead(const std::string& section, const std::string& key, const char* type,
+                const std::string& default_value) {
+  if (IniKeyRecorder* recorder = IniKeyRecorder::active()) {
+    const IniKeyRecorder::Key read{type, default_value};
+    recorder->record(section, key, &read);
+  }
+}
+
+std::string numberText(double value) {
+  std::ostringstream text;
+  text << value;
+  return text.str();
+}
+
+}  // namespace
 
 IniSection::IniSection(const mrpt::config::CConfigFileBase& config, std::string section)
     : config_(config), section_(std::move(section)) {}
 
-bool IniSection::has(const std::string& key) const { return config_.keyExists(section_, key); }
+bool IniSection::has(const std::string& key) const {
+  if (IniKeyRecorder* recorder = IniKeyRecorder::active()) recorder->record(section_, key, nullptr);
+  return config_.keyExists(section_, key);
+}
 
 double IniSection::getDouble(const std::string& key, double default_value) {
   known_keys_.insert(key);
+  recordRead(section_, key, "number", numberText(default_value));
   try {
     return config_.read_double(section_, key, default_value);
   } catch (const std::exception&) {
@@ -22,6 +47,7 @@ double IniSection::getDouble(const std::string& key, double default_value) {
 
 int IniSection::getInt(const std::string& key, int default_value) {
   known_keys_.insert(key);
+  recordRead(section_, key, "integer", std::to_string(default_value));
   const std::string text = config_.read_string(section_, key, "");
   if (text.empty()) return default_value;
   try {
@@ -35,6 +61,7 @@ int IniSection::getInt(const std::string& key, int default_value) {
 
 bool IniSection::getBool(const std::string& key, bool default_value) {
   known_keys_.insert(key);
+  recordRead(section_, key, "bool", default_value ? "true" : "false");
   std::string text = config_.read_string(section_, key, "");
   if (text.empty()) return default_value;
   std::transform(text.begin(), text.end(), text.begin(), ::tolower);
@@ -45,6 +72,7 @@ bool IniSection::getBool(const std::string& key, bool default_value) {
 
 std::string IniSection::getString(const std::string& key, const std::string& default_value) {
   known_keys_.insert(key);
+  recordRead(section_, key, "text", default_value);
   return config_.read_string(section_, key, default_value);
 }
 

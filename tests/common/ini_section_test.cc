@@ -1,4 +1,5 @@
 #include "common/ini_section.h"
+#include "common/ini_key_recorder.h"
 
 #include <gtest/gtest.h>
 #include <mrpt/config/CConfigFileMemory.h>
@@ -60,6 +61,42 @@ TEST(LoadIniSectionTest, RejectsKeysTheLoaderDidNotRead) {
 TEST(NearestKeyTest, PicksSmallestEditDistance) {
   EXPECT_EQ(nearestKey("max_disparty", {"max_disparity", "min_disparity", "window"}), "max_disparity");
   EXPECT_EQ(nearestKey("anything", {}), "");
+}
+
+TEST(IniKeyRecorderTest, RecordsEveryKeyAskedForWithTypeAndDefault) {
+  mrpt::config::CConfigFileMemory config("[stereo]\nwindow = 9\n");
+  IniKeyRecorder recorder;
+  IniSection stereo(config, "stereo");
+  stereo.getInt("window", 7);
+  stereo.getBool("subpixel", false);
+  stereo.has("rect");
+  IniSection grid(config, "grid");
+  grid.has("resolution");
+  grid.getDouble("resolution", 0.1);
+  const IniKeyRecorder::Sections& sections = recorder.sections();
+  ASSERT_EQ(sections.size(), 2u);
+  EXPECT_EQ(sections.at("stereo").size(), 3u);
+  EXPECT_EQ(sections.at("stereo").at("window").type, "integer");
+  EXPECT_EQ(sections.at("stereo").at("window").default_value, "7");
+  EXPECT_EQ(sections.at("stereo").at("subpixel").default_value, "false");
+  EXPECT_EQ(sections.at("stereo").at("rect").type, "text");
+  // The getter after has() gives the type and default.
+  EXPECT_EQ(sections.at("grid").at("resolution").type, "number");
+  EXPECT_EQ(sections.at("grid").at("resolution").default_value, "0.1");
+}
+
+TEST(IniKeyRecorderTest, RecordsNothingOutsideItsLifetimeAndIsAlone) {
+  mrpt::config::CConfigFileMemory config("");
+  IniSection before(config, "stereo");
+  before.getInt("window", 7);
+  {
+    IniKeyRecorder recorder;
+    EXPECT_THROW(IniKeyRecorder second, std::logic_error);
+    EXPECT_TRUE(recorder.sections().empty());
+  }
+  IniKeyRecorder after;
+  before.getInt("max_disparity", 15);
+  EXPECT_EQ(after.sections().at("stereo").size(), 1u);
 }
 
 }  // namespace
