@@ -12,6 +12,7 @@ int runSimulateCommand(const std::vector<std::string>& arguments);
 int runMapCommand(const std::vector<std::string>& arguments);
 int runExploreCommand(const std::vector<std::string>& arguments);
 int runScoreCommand(const std::vector<std::string>& arguments);
+int runReportCommand(const std::vector<std::string>& arguments);
 int runConfigCommand(const std::vector<std::string>& arguments);
 
 }  // namespace stereonav::app

@@ -25,6 +25,8 @@ const Command kCommands[] = {
      stereonav::app::runExploreCommand},
     {"score", "score an occupancy map (ROS map_server YAML) against a ground-truth map",
      stereonav::app::runScoreCommand},
+    {"report", "a page of an exploration run: map and path, coverage over time, debug panels",
+     stereonav::app::runReportCommand},
     {"config", "print every ini section and key the commands accept (docs/configuration.md's skeleton)",
      stereonav::app::runConfigCommand},
 };

@@ -58,7 +58,7 @@ int runMapCommand(const std::vector<std::string>& arguments) {
   if (interactive) progress.emplace(std::cerr, countRawlogFrames(job.rawlog_path, options));
   SigintStopRequest sigint;
   MappingCallbacks callbacks;
-  callbacks.on_frame = [&](size_t frames) {
+  callbacks.on_frame = [&](size_t frames, const mrpt::maps::CMetricMap&) {
     if (progress) progress->update(frames);
   };
   callbacks.stop_requested = [&] { return sigint.requested(); };

@@ -1,5 +1,6 @@
 #include "mapping/rawlog_mapping.h"
 
+#include <algorithm>
 #include <chrono>
 #include <fstream>
 #include <sstream>
@@ -95,12 +96,12 @@ MappingReport mapRawlog(const MappingOptions& options, const MappingJob& job,
     matched_pixels += static_cast<double>(scanner.matchedPixels());
     kept_pixels += static_cast<double>(scanner.keptPixels());
     pixels += static_cast<double>(scanner.disparity().total());
-    if (panels) {
+    if (panels && (path.size() - 1) % std::max<size_t>(job.debug_panel_every, 1) == 0) {
       saveDebugPanel(panels->render(scanner, path.size() - 1, pose), job.debug_panel_directory,
                      path.size() - 1);
     }
     if (!job.virtual_scan_rawlog.empty()) virtual_scans.add(*mapper->virtualScan(), odometry);
-    if (callbacks.on_frame) callbacks.on_frame(path.size());
+    if (callbacks.on_frame) callbacks.on_frame(path.size(), mapper->map());
     if (callbacks.stop_requested && callbacks.stop_requested()) {
       report.interrupted = true;
       break;

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include <mrpt/maps/CMetricMap.h>
 #include <mrpt/poses/CPose2D.h>
 
 #include "mapping/mapping_options.h"
@@ -19,6 +20,7 @@ struct MappingJob {
   // Outputs <prefix>.gridmap, .png, .yaml + .pgm, .3Dscene (map_outputs.h) and .stats.json.
   std::string output_prefix;
   std::string debug_panel_directory;  // "" = no panels; else one PNG per frame (must exist)
+  size_t debug_panel_every = 1;       // with a directory: a panel of every N-th frame (from the first)
   std::string virtual_scan_rawlog;    // "" = none; else virtual_scan_recorder.h's rawlog
   // Poses to map with instead of odometry, one per frame in rawlog order (loadPoseList); empty
   // = odometry. The recorded odometry still goes into the virtual scan rawlog.
@@ -32,8 +34,8 @@ std::vector<mrpt::poses::CPose2D> loadPoseList(const std::string& path);
 
 // How the caller follows and steers the replay; every member may be left empty.
 struct MappingCallbacks {
-  // After every mapped frame, with the number mapped so far.
-  std::function<void(size_t frames_mapped)> on_frame;
+  // After every mapped frame, with the number mapped so far and the map as it stands.
+  std::function<void(size_t frames_mapped, const mrpt::maps::CMetricMap& map)> on_frame;
   // Asked after every frame; true stops the replay there (e.g. Ctrl-C), outputs are still saved.
   std::function<bool()> stop_requested;
 };

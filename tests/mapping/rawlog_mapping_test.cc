@@ -10,10 +10,12 @@
 #include <sys/wait.h>
 
 #include <cstdlib>
+#include <set>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 
+#include "mapping/map_outputs.h"
 #include "observations/rawlog_writer.h"
 #include "synthetic_scene.h"
 
@@ -166,7 +168,7 @@ TEST_F(RawlogMappingTest, CorruptedObjectInTheMiddleStopsMappingThere) {
 TEST_F(RawlogMappingTest, StopRequestEndsAfterTheCurrentFrameAndSavesTheMap) {
   MappingCallbacks callbacks;
   size_t seen = 0;
-  callbacks.on_frame = [&](size_t frames) { seen = frames; };
+  callbacks.on_frame = [&](size_t frames, const mrpt::maps::CMetricMap&) { seen = frames; };
   callbacks.stop_requested = [&] { return seen == 3; };
   const MappingReport report = mapRawlog(MappingOptions{}, jobFor(path("full.rawlog"), "stopped"), callbacks);
   EXPECT_TRUE(report.interrupted);
@@ -174,6 +176,31 @@ TEST_F(RawlogMappingTest, StopRequestEndsAfterTheCurrentFrameAndSavesTheMap) {
   EXPECT_EQ(report.frames_mapped, 3u);
   expectOutputs("stopped");
   EXPECT_NE(readBytes(path("stopped.stats.json")).find("\"interrupted\": true"), std::string::npos);
+}
+
+TEST_F(RawlogMappingTest, PanelsOfEveryNthFrameAndTheGrowingMapInTheCallback) {
+  MappingJob job = jobFor(path("full.rawlog"), "every");
+  job.debug_panel_directory = path("every_panels");
+  job.debug_panel_every = 3;
+  fs::create_directories(job.debug_panel_directory);
+  MappingCallbacks callbacks;
+  std::vector<size_t> known_cells;
+  callbacks.on_frame = [&](size_t, const mrpt::maps::CMetricMap& map) {
+    const DisparityTaggedGrid grid = gridOfMap(map, OccupancyScale{});
+    size_t known = 0;
+    for (int row = 0; row < grid.height(); ++row) {
+      for (int col = 0; col < grid.width(); ++col) known += grid.occupancy(col, row) != OccupancyScale{}.unknown();
+    }
+    known_cells.push_back(known);
+  };
+  mapRawlog(MappingOptions{}, job, callbacks);
+  std::set<std::string> panels;
+  for (const auto& entry : fs::directory_iterator(job.debug_panel_directory)) panels.insert(entry.path().filename());
+  // 8 frames, every third from the first: frames 0, 3 and 6.
+  EXPECT_EQ(panels, (std::set<std::string>{"panel_000000.png", "panel_000003.png", "panel_000006.png"}));
+  ASSERT_EQ(known_cells.size(), kFrames);
+  EXPECT_GT(known_cells.front(), 0u);
+  EXPECT_LT(known_cells.front(), known_cells.back()) << "the map is passed as it grows";
 }
 
 TEST_F(RawlogMappingTest, VirtualScanRawlogHoldsOdometryAndOneScanPerFrame) {
