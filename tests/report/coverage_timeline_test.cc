@@ -1,10 +1,7 @@
 #include "report/coverage_timeline.h"
 
-#include <mrpt/config/CConfigFileMemory.h>
-
 #include <gtest/gtest.h>
 
-#include <cmath>
 #include <filesystem>
 
 #include "simulator/world_loader.h"
@@ -12,27 +9,15 @@
 namespace stereonav {
 namespace {
 
-constexpr const char* kRoom = R"(
-[world]
-start_pose = 0.8 1.5 0
-ceiling_height = 2.5
-[wall.room]
-points = 0 0; 3.5 0; 3.5 3; 0 3; 0 0
-[box.crate]
-center = 2.8 0.8
-size = 0.5 0.5
-height = 0.8
-)";
-
 // The replay maps the recording to the run's own map, so its last sample is the coverage the run
 // reported at its end, and the samples lie one simulated second apart.
 TEST(ReplayCoverage, EndsAtTheRunsOwnCoverageWithASampleEachSecond) {
   const std::string directory = std::string(STEREONAV_BINARY_DIR) + "/test_outputs/report/room";
   std::filesystem::remove_all(directory);
   std::filesystem::create_directories(directory + "/panels");
-  const World world = loadWorld(mrpt::config::CConfigFileMemory(kRoom), "room.ini");
-  const ExplorationConfig config =
-      loadExplorationConfig(std::string(STEREONAV_TEST_DATA_DIR) + "/../../ini/explore_160x120.ini");
+  const std::string ini = std::string(STEREONAV_TEST_DATA_DIR) + "/../../ini/";
+  const World world = loadWorld(ini + "worlds/table_room.ini");
+  const ExplorationConfig config = loadExplorationConfig(ini + "explore_160x120.ini");
   ExplorationJob run;
   run.output_prefix = directory + "/run";
   run.record_rawlog = directory + "/run.rawlog";
