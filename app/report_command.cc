@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
@@ -82,12 +83,14 @@ int runReportCommand(const std::vector<std::string>& arguments) {
   page.images = {{"the map with the robot's path (green start, blue end)", "path.png"},
                  {"the explorer's last plan", "plan.png"}};
   page.coverage = coverage;
-  std::vector<std::string> panel_files;
-  for (const auto& entry : fs::directory_iterator(fs::path(out) / "panels")) {
-    panel_files.push_back("panels/" + entry.path().filename().string());
+  for (size_t frame = 0; panels > 0 && frame < frames; frame += job.debug_panel_every) {
+    char file[32];
+    std::snprintf(file, sizeof file, "panel_%06zu.png", frame);  // as saveDebugPanel names them
+    std::ostringstream caption;
+    caption << "frame " << frame << ", t = " << static_cast<double>(frame) / config.simulator.simulation.frame_rate_hz
+            << " s";
+    page.panels.emplace_back(caption.str(), std::string("panels/") + file);
   }
-  std::sort(panel_files.begin(), panel_files.end());
-  page.panel_images = panel_files;
   writeStringAtomically(out + "/index.html", summaryHtml(page));
   std::cerr << "stereonav report: coverage " << percent(coverage.back().coverage) << " (seen "
             << percent(coverage.back().seen_coverage) << ") after " << coverage.back().time_s

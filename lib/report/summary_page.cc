@@ -80,12 +80,12 @@ std::string summaryHtml(const SummaryPage& page) {
          << escaped(caption) << "</figcaption></figure>\n";
   }
   if (!page.coverage.empty()) html << "<h2>Coverage over time</h2>\n" << coverageSvg(page.coverage);
-  if (!page.panel_images.empty()) {
+  if (!page.panels.empty()) {
     html << "<h2>Debug panels</h2>\n<p>Reference image, disparity (blue far, red near, white invalid, magenta "
             "removed as spikes), the column reading, depth per column, and the frame's OCC (black) and CLEAR "
             "(white) regions from above (paper figures 5 and 6).</p>\n";
-    for (const std::string& panel : page.panel_images) {
-      html << "<figure><img src=\"" << escaped(panel) << "\" alt=\"debug panel\"><figcaption>" << escaped(panel)
+    for (const auto& [caption, path] : page.panels) {
+      html << "<figure><img src=\"" << escaped(path) << "\" alt=\"debug panel\"><figcaption>" << escaped(caption)
            << "</figcaption></figure>\n";
     }
   }

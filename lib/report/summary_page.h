@@ -14,7 +14,7 @@ struct SummaryPage {
   std::vector<std::pair<std::string, std::string>> facts;  // name, value, shown as a table
   std::vector<std::pair<std::string, std::string>> images;  // caption, path relative to the page
   std::vector<CoverageSample> coverage;                    // drawn as a curve
-  std::vector<std::string> panel_images;                   // debug panels, relative paths
+  std::vector<std::pair<std::string, std::string>> panels;  // debug panels: caption, path
 };
 
 // The points attribute of an SVG polyline drawing `value` of each sample in a width x height box:
