@@ -117,6 +117,20 @@ class ClosedLoopMapper {
   FrontierExplorer& explorer_;
 };
 
+void fillFromSimulation(ExplorationReport& report, const Simulation& simulation, const mrpt::poses::CPose2D& start,
+                        double frame_rate_hz) {
+  report.start_x = start.x();
+  report.start_y = start.y();
+  report.start_phi = start.phi();
+  report.frame_rate_hz = frame_rate_hz;
+  report.frames = simulation.frames();
+  report.distance_m = simulation.distance();
+  report.top_speed_mps = simulation.topSpeed();
+  report.collision_events = simulation.collisionEvents();
+  report.sim_time_s = simulation.time();
+  report.collisions = simulation.robot().collisionCount();
+}
+
 }  // namespace
 
 ExplorationReport runExploration(const World& world, const ExplorationConfig& config, const ExplorationJob& job) {
@@ -162,17 +176,7 @@ ExplorationReport runExploration(const World& world, const ExplorationConfig& co
   }
   if (recorder) recorder->finish();
 
-  report.start_x = start.x();
-  report.start_y = start.y();
-  report.start_phi = start.phi();
-  report.frame_rate_hz = config.simulator.simulation.frame_rate_hz;
-  report.frames = simulation.frames();
-  report.distance_m = simulation.distance();
-  report.top_speed_mps = simulation.topSpeed();
-  report.collision_events = simulation.collisionEvents();
-  report.sim_time_s = simulation.time();
-  report.collisions = simulation.robot().collisionCount();
-  report.blocked_reversals = robot_interface.apparentCollisions();
+  fillFromSimulation(report, simulation, start, config.simulator.simulation.frame_rate_hz);
   report.pipeline_ms_per_frame = mapper.mapper().times().meanFrameMs();
   const DisparityTaggedGrid grid = mapper.grid();
   report.coverage = measureCoverage(truth, grid, robot_options.radius_m, start.x(), start.y());

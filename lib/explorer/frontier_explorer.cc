@@ -29,19 +29,6 @@ std::string metres(double value) {
 
 }  // namespace
 
-const char* phaseName(ExplorerPhase phase) {
-  switch (phase) {
-    case ExplorerPhase::kLookingAround: return "looking_around";
-    case ExplorerPhase::kTurning: return "turning";
-    case ExplorerPhase::kDriving: return "driving";
-    case ExplorerPhase::kLookingAtFrontier: return "looking_at_frontier";
-    case ExplorerPhase::kEscaping: return "escaping";
-    case ExplorerPhase::kBackingOff: return "backing_off";
-    case ExplorerPhase::kFinished: return "finished";
-  }
-  return "?";
-}
-
 FrontierExplorer::FrontierExplorer(const ExplorerOptions& options)
     : options_(options),
       guard_(options),
