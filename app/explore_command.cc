@@ -2,7 +2,7 @@
 
 #include "command_line.h"
 #include "commands.h"
-#include "explorer/exploration_run.h"
+#include "closed_loop/exploration_run.h"
 #include "simulator/world_loader.h"
 
 namespace stereonav::app {

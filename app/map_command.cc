@@ -7,9 +7,9 @@
 #include "command_line.h"
 #include "commands.h"
 #include "mapping/mapping_options.h"
-#include "mapping/progress_meter.h"
+#include "progress_meter.h"
 #include "mapping/rawlog_mapping.h"
-#include "mapping/sigint_stop.h"
+#include "sigint_stop.h"
 
 namespace stereonav::app {
 namespace {

@@ -9,7 +9,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "explorer/exploration_run.h"
+#include "closed_loop/exploration_config.h"
 #include "mapping/mapping_options.h"
 #include "occupancy_grid/stereo_occupancy_grid_map.h"
 #include "simulator/world_loader.h"

@@ -4,6 +4,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "common/json_writer.h"
 #include "evaluation/map_comparison.h"
 
 namespace stereonav {
@@ -35,17 +36,24 @@ std::string MapScore::toText() const {
 }
 
 std::string MapScore::toJson() const {
-  std::ostringstream out;
-  out << std::setprecision(6);
-  out << "{\"precision\": " << precision() << ", \"recall\": " << recall() << ", \"false_free\": " << falseFree()
-      << ", \"coverage\": " << coverage() << ", \"tolerance_cells\": " << tolerance_cells
-      << ", \"obstacles_in_view_only\": " << (obstacles_in_view_only ? "true" : "false")
-      << ", \"coverage_from_start\": " << (coverage_from_start ? "true" : "false")
-      << ", \"map_occupied\": " << map_occupied << ", \"map_occupied_correct\": " << map_occupied_correct
-      << ", \"truth_obstacles\": " << truth_obstacles << ", \"truth_obstacles_found\": " << truth_obstacles_found
-      << ", \"truth_obstacles_free\": " << truth_obstacles_free << ", \"reachable_free\": " << reachable_free
-      << ", \"reachable_free_mapped_free\": " << reachable_free_mapped_free << "}\n";
-  return out.str();
+  JsonWriter json;
+  json.beginObject()
+      .key("precision").value(precision())
+      .key("recall").value(recall())
+      .key("false_free").value(falseFree())
+      .key("coverage").value(coverage())
+      .key("tolerance_cells").value(tolerance_cells)
+      .key("obstacles_in_view_only").value(obstacles_in_view_only)
+      .key("coverage_from_start").value(coverage_from_start)
+      .key("map_occupied").value(map_occupied)
+      .key("map_occupied_correct").value(map_occupied_correct)
+      .key("truth_obstacles").value(truth_obstacles)
+      .key("truth_obstacles_found").value(truth_obstacles_found)
+      .key("truth_obstacles_free").value(truth_obstacles_free)
+      .key("reachable_free").value(reachable_free)
+      .key("reachable_free_mapped_free").value(reachable_free_mapped_free)
+      .endObject();
+  return json.str();
 }
 
 MapScore scoreMap(const RosMap& map, const RosMap& truth, const MapScoreOptions& options) {

@@ -3,6 +3,43 @@
 #include <cmath>
 
 namespace stereonav {
+namespace {
+
+// The tunables of the safety guard, the motion controller, the frontier memory and the phase machine.
+void readPartTunables(IniSection& section, ExplorerOptions& options) {
+  options.guard_horizon_m = section.getPositive("guard_horizon_m", options.guard_horizon_m);
+  options.stop_gap_m = section.getNonNegative("stop_gap_m", options.stop_gap_m);
+  options.scan_memory_s = section.getNonNegative("scan_memory_s", options.scan_memory_s);
+  options.held_speed_mps = section.getNonNegative("held_speed_mps", options.held_speed_mps);
+  options.holding_depth_m = section.getNonNegative("holding_depth_m", options.holding_depth_m);
+  options.blocked_command_mps = section.getPositive("blocked_command_mps", options.blocked_command_mps);
+  options.blocked_speed_mps = section.getNonNegative("blocked_speed_mps", options.blocked_speed_mps);
+  options.blocked_s = section.getPositive("blocked_s", options.blocked_s);
+  options.back_off_speed_mps = section.getPositive("back_off_speed_mps", options.back_off_speed_mps);
+  options.back_off_s = section.getPositive("back_off_s", options.back_off_s);
+  // Converted only when given, so that the default stays exactly the radians above.
+  if (section.has("facing_tolerance_deg")) {
+    const double facing_deg = section.getPositive("facing_tolerance_deg", 0.0);
+    if (facing_deg > 90.0) throw ConfigError("[" + section.name() + "] facing_tolerance_deg: must be at most 90");
+    options.facing_tolerance_rad = facing_deg * M_PI / 180.0;
+  }
+  options.min_turn_rate = section.getPositive("min_turn_rate", options.min_turn_rate);
+  options.turn_braking = section.getPositive("turn_braking", options.turn_braking);
+  options.look_around_spacing_m = section.getNonNegative("look_around_spacing_m", options.look_around_spacing_m);
+  options.escape_speed_mps = section.getPositive("escape_speed_mps", options.escape_speed_mps);
+  options.resolving_views = section.getInt("resolving_views", options.resolving_views);
+  if (options.resolving_views < 1) throw ConfigError("[" + section.name() + "] resolving_views: must be at least 1");
+  options.look_hold_s = section.getNonNegative("look_hold_s", options.look_hold_s);
+  options.arrived_m = section.getNonNegative("arrived_m", options.arrived_m);
+  options.progress_m = section.getNonNegative("progress_m", options.progress_m);
+  options.visit_spacing_m = section.getNonNegative("visit_spacing_m", options.visit_spacing_m);
+  options.escape_search_m = section.getPositive("escape_search_m", options.escape_search_m);
+  options.failed_escape_m = section.getNonNegative("failed_escape_m", options.failed_escape_m);
+  options.speck_cells = section.getInt("speck_cells", options.speck_cells);
+  if (options.speck_cells < 0) throw ConfigError("[" + section.name() + "] speck_cells: must not be negative");
+}
+
+}  // namespace
 
 ExplorerOptions loadExplorerOptions(IniSection& section) {
   ExplorerOptions options;
@@ -47,6 +84,7 @@ ExplorerOptions loadExplorerOptions(IniSection& section) {
   if (options.obstacle_memory_min_g < 0 || options.obstacle_memory_min_g > 255) {
     throw ConfigError("[" + section.name() + "] obstacle_memory_min_g: must be an occupancy value 0..255");
   }
+  readPartTunables(section, options);
   if (options.obstacle_memory_blind_m > options.obstacle_memory_range_m) {
     throw ConfigError("[" + section.name() + "] obstacle_memory_blind_m: must not exceed obstacle_memory_range_m");
   }

@@ -74,6 +74,72 @@ struct ExplorerOptions {
   // Only points where the map's occupancy value is at least this are kept: several readings
   // agree there (a stereo mismatch seldom repeats).
   int obstacle_memory_min_g = 200;
+
+  // The safety guard (safety_guard.h). It looks this far along the commanded arc, more than the
+  // braking distance from top speed.
+  double guard_horizon_m = 2.5;
+  // Braking leaves this much of the free travel unused. Nearer than about 0.3 m to the body's
+  // front an obstacle is out of the rig's disparity range (f B / max_disparity is 0.52 m from
+  // the cameras, which sit 0.2 m behind the front) and often below its view: the robot must not
+  // close in on what it can no longer measure. This also covers a scan up to a frame old (a person
+  // walks 0.16 m in 0.2 s) and the command taking effect a cycle late.
+  double stop_gap_m = 0.3;
+  // The points of the scans of the last scan_memory_s count too: what has just left the view
+  // (too near, or below it) still counts for a moment.
+  double scan_memory_s = 1.0;
+  // When the guard allows less than held_speed_mps the robot is held by what the scan shows: those
+  // points (every one within holding_depth_m of the first met along the arc) are remembered as
+  // obstacles whether the map has them or not, so the next plan goes round them.
+  double held_speed_mps = 0.05;
+  double holding_depth_m = 0.3;
+  // Commanded at least blocked_command_mps forward but moving slower than blocked_speed_mps for
+  // blocked_s: the robot is blocked (MRPT's "apparent collision"); it reverses at back_off_speed_mps
+  // for back_off_s.
+  double blocked_command_mps = 0.1;
+  double blocked_speed_mps = 0.02;
+  double blocked_s = 1.0;
+  double back_off_speed_mps = 0.2;
+  double back_off_s = 1.5;
+
+  // The motion controller (motion_controller.h). Facing counts as done within facing_tolerance_rad
+  // of heading error; turning on the spot never goes slower than min_turn_rate (rad/s), so it
+  // ends, and plans to brake at turn_braking (rad/s^2), within what robots like the paper's
+  // manage (the simulated one: 4).
+  double facing_tolerance_rad = 0.2;
+  double min_turn_rate = 0.25;
+  double turn_braking = 3.0;
+  // A robot that has moved this far from its last look-around may look around again.
+  double look_around_spacing_m = 1.0;
+  // Driving to the nearest cell where the body fits when the map has closed in on the robot.
+  double escape_speed_mps = 0.2;
+
+  // The frontier memory (frontier_memory.h). A frontier cell in plain sight within
+  // looked_at_range_m for this many maps without being resolved is dropped: without this the
+  // edges of what stereo cannot resolve (under a table top, a wall eroded by grazing rays and
+  // rebuilt by far readings) flicker back as new frontier cells, and the robot tours a finished
+  // room. Twelve views match look_hold_s at 5 Hz.
+  int resolving_views = 12;
+
+  // The phase machine (frontier_explorer.h). After facing a frontier the robot holds still this
+  // long so that the map sees what is behind it before the frontier is judged: taking a cell that
+  // far readings saturated (255) below the free threshold (50) takes eleven CLEAR updates of
+  // K = 20 (paper section 3.4), twelve frames at 5 Hz. A frontier that resolves sooner ends the
+  // look at once (the next plan has another target).
+  double look_hold_s = 2.4;
+  // Within this much path of its goal the robot has arrived: it turns to look rather than creep
+  // cell by cell along the goal region's edge as the frontier recedes.
+  double arrived_m = 0.4;
+  // Progress: the cost-to-go must drop by progress_m within stuck_timeout_s.
+  double progress_m = 0.3;
+  // Robot positions closer than this to the previous one add nothing to the footprint.
+  double visit_spacing_m = 0.1;
+  // How far the robot searches for a cell where its body fits when the map has closed in on it;
+  // cells within failed_escape_m of an escape target it could not drive to are not tried again.
+  double escape_search_m = 1.5;
+  double failed_escape_m = 0.3;
+  // Obstacle islands of up to this many cells are specks (NavigationGrid::freeSpecks), planned
+  // past when nothing else is reachable.
+  int speck_cells = 2;
 };
 
 // Section [explorer]: robot_radius_m, safety_margin_m, repulsion_distance_m, repulsion_weight,
@@ -82,7 +148,12 @@ struct ExplorerOptions {
 // seen_free_range_m,
 // max_speed_mps, max_turn_rate, braking_deceleration, heading_gain, turn_in_place_deg,
 // lookahead_m, initial_look_around, look_around_turn_rate, stuck_timeout_s, guard_margin_m,
-// obstacle_memory_range_m, obstacle_memory_blind_m, obstacle_memory_min_g.
+// obstacle_memory_range_m, obstacle_memory_blind_m, obstacle_memory_min_g,
+// guard_horizon_m, stop_gap_m, scan_memory_s, held_speed_mps, holding_depth_m,
+// blocked_command_mps, blocked_speed_mps, blocked_s, back_off_speed_mps, back_off_s,
+// facing_tolerance_deg, min_turn_rate, turn_braking, look_around_spacing_m, escape_speed_mps,
+// resolving_views, look_hold_s, arrived_m, progress_m, visit_spacing_m, escape_search_m,
+// failed_escape_m, speck_cells.
 ExplorerOptions loadExplorerOptions(IniSection& section);
 
 }  // namespace stereonav

@@ -25,8 +25,8 @@ struct SeenFreeMemoryOptions {
 // preservation (section 4.3) keeps far readings from smearing obstacles seen up close, but not
 // free space: a far reading a disparity step off, or a ghost match on a repetitive texture
 // (section 4.1), paints its uncertainty region over floor seen free a moment ago. Such bands
-// closed corridors and doors behind the robot, and every band was a new frontier: the robot
-// toured finished rooms. The planner takes a remembered cell as free while the map holds it
+// close corridors and doors behind the robot, and every band is a new frontier: the robot
+// would tour finished rooms. The planner takes a remembered cell as free while the map holds it
 // unknown or imprecise; an obstacle the map holds precisely still wins, and the reactive guard
 // still brakes for whatever the newest scans show.
 class SeenFreeMemory {

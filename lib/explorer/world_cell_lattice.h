@@ -5,7 +5,7 @@
 #include <cmath>
 #include <utility>
 
-#include "sensor_model/stereo_sensor_model.h"
+#include "occupancy_grid/grid_frame.h"
 
 namespace stereonav {
 

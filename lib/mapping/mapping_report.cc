@@ -1,39 +1,11 @@
 #include "mapping/mapping_report.h"
 
-#include <cstdio>
 #include <sstream>
+
+#include "common/json_writer.h"
 
 namespace stereonav {
 namespace {
-
-std::string jsonString(const std::string& text) {
-  std::string quoted = "\"";
-  for (const char c : text) {
-    switch (c) {
-      case '"': quoted += "\\\""; break;
-      case '\\': quoted += "\\\\"; break;
-      case '\n': quoted += "\\n"; break;
-      case '\t': quoted += "\\t"; break;
-      default:
-        if (static_cast<unsigned char>(c) < 0x20) {
-          char escaped[8];
-          std::snprintf(escaped, sizeof escaped, "\\u%04x", c);
-          quoted += escaped;
-        } else {
-          quoted += c;
-        }
-    }
-  }
-  return quoted + "\"";
-}
-
-// JSON has no infinities or NaNs; rates are finite by construction, this keeps it that way.
-std::string jsonNumber(double value) {
-  if (!(value == value) || value > 1e300 || value < -1e300) return "null";
-  char text[32];
-  std::snprintf(text, sizeof text, "%.6g", value);
-  return text;
-}
 
 constexpr const char* kRejectReasonKeys[kRejectReasonCount] = {
     "missing_calibration", "wrong_image_format", "not_rectified", "missing_image",
@@ -65,45 +37,42 @@ std::string MappingReport::summary() const {
 }
 
 std::string MappingReport::toJson() const {
-  std::ostringstream json;
-  json << "{\n"
-       << "  \"rawlog\": " << jsonString(rawlog_path) << ",\n"
-       << "  \"complete\": " << (complete() ? "true" : "false") << ",\n"
-       << "  \"frames\": " << frames_mapped << ",\n"
-       << "  \"frames_without_odometry\": " << frames_without_odometry << ",\n"
-       << "  \"skipped_frames\": {\n    \"total\": " << skipped.total();
+  JsonWriter json;
+  json.beginObject()
+      .key("rawlog").value(rawlog_path)
+      .key("complete").value(complete())
+      .key("frames").value(frames_mapped)
+      .key("frames_without_odometry").value(frames_without_odometry)
+      .key("skipped_frames").beginObject().key("total").value(skipped.total());
   for (size_t reason = 0; reason < kRejectReasonCount; ++reason) {
-    json << ",\n    " << jsonString(kRejectReasonKeys[reason]) << ": " << skipped.count[reason];
+    json.key(kRejectReasonKeys[reason]).value(skipped.count[reason]);
   }
-  json << ",\n    \"summary\": " << jsonString(skipped.summary()) << "\n  },\n";
+  json.key("summary").value(skipped.summary()).endObject().key("damage");
   if (damage) {
-    json << "  \"damage\": {\"object_index\": " << damage->object_index
-         << ", \"byte_offset\": " << damage->byte_offset
-         << ", \"error\": " << jsonString(damage->error)
-         << ", \"description\": " << jsonString(damage->describe(rawlog_path)) << "},\n";
+    json.beginObject()
+        .key("object_index").value(damage->object_index)
+        .key("byte_offset").value(damage->byte_offset)
+        .key("error").value(damage->error)
+        .key("description").value(damage->describe(rawlog_path))
+        .endObject();
   } else {
-    json << "  \"damage\": null,\n";
+    json.null();
   }
-  json << "  \"interrupted\": " << (interrupted ? "true" : "false") << ",\n"
-       << "  \"calibration_warnings\": [";
-  for (size_t i = 0; i < calibration_warnings.size(); ++i) {
-    json << (i ? ", " : "") << jsonString(calibration_warnings[i]);
-  }
-  json << "],\n"
-       << "  \"matched_pixel_fraction\": " << jsonNumber(matched_pixel_fraction) << ",\n"
-       << "  \"valid_pixel_fraction\": " << jsonNumber(kept_pixel_fraction) << ",\n"
-       << "  \"time_per_stage_ms\": {";
+  json.key("interrupted").value(interrupted).key("calibration_warnings").beginArray();
+  for (const std::string& warning : calibration_warnings) json.value(warning);
+  json.endArray()
+      .key("matched_pixel_fraction").value(matched_pixel_fraction)
+      .key("valid_pixel_fraction").value(kept_pixel_fraction)
+      .key("time_per_stage_ms").beginObject();
   for (size_t stage = 0; stage < kPipelineStageCount; ++stage) {
     const auto which = static_cast<PipelineStage>(stage);
-    json << (stage ? ", " : "") << jsonString(stageName(which)) << ": "
-         << jsonNumber(times.meanMs(which));
+    json.key(stageName(which)).value(times.meanMs(which));
   }
-  json << ", \"total\": " << jsonNumber(times.meanFrameMs()) << "},\n"
-       << "  \"pipeline_frames_per_second\": " << jsonNumber(pipelineFramesPerSecond()) << ",\n"
-       << "  \"wall_seconds\": " << jsonNumber(wall_seconds) << ",\n"
-       << "  \"frames_per_second\": "
-       << jsonNumber(wall_seconds > 0.0 ? frames_mapped / wall_seconds : 0.0) << "\n"
-       << "}\n";
+  json.key("total").value(times.meanFrameMs()).endObject()
+      .key("pipeline_frames_per_second").value(pipelineFramesPerSecond())
+      .key("wall_seconds").value(wall_seconds)
+      .key("frames_per_second").value(wall_seconds > 0.0 ? frames_mapped / wall_seconds : 0.0)
+      .endObject();
   return json.str();
 }
 

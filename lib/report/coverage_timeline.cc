@@ -3,7 +3,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "explorer/exploration_coverage.h"
+#include "evaluation/exploration_coverage.h"
 #include "mapping/map_outputs.h"
 #include "mapping/rawlog_mapping.h"
 #include "simulator/ground_truth_map.h"

@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include "explorer/exploration_run.h"
+#include "closed_loop/exploration_config.h"
 #include "simulator/world.h"
 
 namespace stereonav {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "column_projection/disparity_scan.h"
+#include "occupancy_grid/grid_frame.h"
 #include "rig/camera_rig.h"
 #include "sensor_model/polygon_rasterizer.h"
 #include "sensor_model/sensor_model_options.h"
@@ -78,22 +79,6 @@ struct RegionCorners {
   mrpt::math::TPoint2D near_right;
   mrpt::math::TPoint2D far_left;
   mrpt::math::TPoint2D far_right;
-};
-
-// Where a grid's cells are: cell (i, j) covers [origin_x + i r, origin_x + (i+1) r) x
-// [origin_y + j r, ...) with r = resolution, x right and y up (MRPT's COccupancyGridMap2D).
-struct GridFrame {
-  double origin_x = 0.0;
-  double origin_y = 0.0;
-  double resolution = 0.05;
-};
-
-// Axis-aligned world bounds of a scan's regions, used to grow the grid before rasterising.
-struct WorldBounds {
-  double min_x;
-  double max_x;
-  double min_y;
-  double max_y;
 };
 
 // One reading's OCC cells: spans [occupied_begin, occupied_end) of ScanRaster::spans.

@@ -2,7 +2,7 @@
 
 #include <mrpt/math/wrap2pi.h>
 
-#include "simulator/moving_traffic.h"
+#include "simulator/footprint_overlap.h"
 
 #include <algorithm>
 #include <cmath>
@@ -56,69 +56,115 @@ SimulationOptions loadSimulationOptions(IniSection& section) {
   return options;
 }
 
+mrpt::Clock::time_point simulationTimestamp(double time_s) {
+  constexpr double kRunEpoch = 946684800.0;  // 2000-01-01T00:00:00Z, seconds since 1970
+  return mrpt::Clock::fromDouble(kRunEpoch + time_s);
+}
+
+RigFrame rigFrameOf(const SimulatedFrame& frame, const CameraRig& rig) {
+  RigFrame rig_frame;
+  rig_frame.timestamp = simulationTimestamp(frame.time_s);
+  rig_frame.reference = frame.images.reference;
+  rig_frame.secondaries.assign(frame.images.secondaries.begin(), frame.images.secondaries.end());
+  rig_frame.rig = rig;
+  rig_frame.odometry = frame.odometry;
+  return rig_frame;
+}
+
 Simulation::Simulation(const World& world, const CameraRig& rig, const SensorOptions& sensor,
                        const DifferentialDriveOptions& robot, const SimulationOptions& options)
-    : world_(world), rig_(rig), sensor_(sensor), robot_(robot), options_(options) {}
+    : Simulation(world, rig, sensor, robot, options,
+                 mrpt::poses::CPose2D(world.start_pose[0], world.start_pose[1], world.start_pose[2])) {}
 
-SimulationSummary Simulation::run(const MotionPlan& plan,
-                                  const std::function<void(const SimulatedFrame&)>& on_frame) {
-  const mrpt::poses::CPose2D start(world_.start_pose[0], world_.start_pose[1], world_.start_pose[2]);
-  DifferentialDriveRobot robot(world_, robot_, start);
-  RigRenderer renderer(world_, rig_, sensor_);
-  MovingTraffic traffic(world_);
-  SimulationSummary summary;
+Simulation::Simulation(const World& world, const CameraRig& rig, const SensorOptions& sensor,
+                       const DifferentialDriveOptions& robot, const SimulationOptions& options,
+                       const mrpt::poses::CPose2D& start)
+    : world_(world),
+      robot_options_(robot),
+      options_(options),
+      robot_(world, robot, start),
+      renderer_(world, rig, sensor),
+      traffic_(world) {}
+
+bool Simulation::frameDue() const {
+  return time_ >= static_cast<double>(frames_) / options_.frame_rate_hz - kTimeSlack;
+}
+
+SimulatedFrame Simulation::renderFrame() {
+  SimulatedFrame frame;
+  frame.time_s = time_;
+  frame.images = renderer_.render(robot_.pose(), time_, traffic_.solids());
+  frame.true_pose = robot_.pose();
+  frame.odometry = robot_.odometry();
+  frame.collisions = robot_.collisionCount();
+  ++frames_;
+  return frame;
+}
+
+bool Simulation::timeUp(double limit_s) const { return time_ >= limit_s - kTimeSlack; }
+
+void Simulation::step(double speed, double turn_rate) {
   const double dt = 1.0 / options_.control_rate_hz;
-  size_t step = 0;
+  const mrpt::poses::CPose2D before = robot_.pose();
+  const double speed_before = robot_.speed();
+  const int collisions_before = robot_.collisionCount();
+  traffic_.advance(dt, robot_.pose(), robot_.speed(), robot_options_.radius_m);
+  robot_.step(speed, turn_rate, dt, traffic_.solids());
+  if (robot_.collisionCount() > collisions_before) recordCollision(time_ + dt, speed_before);
+  distance_m_ += std::hypot(robot_.pose().x() - before.x(), robot_.pose().y() - before.y());
+  top_speed_mps_ = std::max(top_speed_mps_, std::abs(robot_.speed()));
+  time_ = static_cast<double>(++steps_) * dt;
+}
+
+void Simulation::recordCollision(double time_s, double speed_before) {
+  // A moving obstacle this close to the body is what the robot touched.
+  constexpr double kContactSlackM = 0.01;
+  CollisionEvent event{time_s, robot_.pose().x(), robot_.pose().y(), speed_before, "static"};
+  for (size_t i = 0; i < traffic_.solids().size(); ++i) {
+    if (solidOverlapsDisc(traffic_.solids()[i], robot_.pose().x(), robot_.pose().y(),
+                          robot_options_.radius_m + kContactSlackM)) {
+      event.with = world_.moving_obstacles[i].name;
+    }
+  }
+  collision_events_.push_back(event);
+}
+
+SimulationSummary Simulation::run(const MotionPlan& plan, const std::function<void(const SimulatedFrame&)>& on_frame) {
+  SimulationSummary summary;
   size_t next_waypoint = 0;
   size_t active_command = 0;
-  double time = 0.0;
-
-  const auto emitFrame = [&] {
-    SimulatedFrame frame;
-    frame.time_s = time;
-    frame.images = renderer.render(robot.pose(), time, traffic.solids());
-    frame.true_pose = robot.pose();
-    frame.odometry = robot.odometry();
-    frame.collisions = robot.collisionCount();
-    on_frame(frame);
-    ++summary.frames;
-  };
-  emitFrame();
   while (true) {
+    if (frameDue()) on_frame(renderFrame());
     Velocity command;
     if (!plan.commands.empty()) {
-      if (time >= plan.commands.back().time_s - kTimeSlack) {
+      if (time_ >= plan.commands.back().time_s - kTimeSlack) {
         summary.plan_completed = true;
         break;
       }
-      while (time >= plan.commands[active_command + 1].time_s - kTimeSlack) ++active_command;
+      while (time_ >= plan.commands[active_command + 1].time_s - kTimeSlack) ++active_command;
       command = {plan.commands[active_command].speed_mps, plan.commands[active_command].turn_rate};
     } else {
       while (next_waypoint < plan.waypoints.size() &&
-             std::hypot(plan.waypoints[next_waypoint].x - robot.pose().x(),
-                        plan.waypoints[next_waypoint].y - robot.pose().y()) < options_.waypoint_tolerance_m) {
+             std::hypot(plan.waypoints[next_waypoint].x - robot_.pose().x(),
+                        plan.waypoints[next_waypoint].y - robot_.pose().y()) < options_.waypoint_tolerance_m) {
         ++next_waypoint;
       }
       if (next_waypoint == plan.waypoints.size()) {
-        if (robot.speed() == 0.0 && robot.turnRate() == 0.0) {
+        if (robot_.speed() == 0.0 && robot_.turnRate() == 0.0) {
           summary.plan_completed = true;
           break;
         }
       } else {
-        command = steerTowards(robot.pose(), plan.waypoints, next_waypoint, robot_.max_acceleration, options_);
+        command = steerTowards(robot_.pose(), plan.waypoints, next_waypoint, robot_options_.max_acceleration, options_);
       }
     }
-    if (time >= options_.max_duration_s - kTimeSlack) break;
-
-    const mrpt::poses::CPose2D before = robot.pose();
-    traffic.advance(dt, robot.pose(), robot.speed(), robot_.radius_m);
-    robot.step(command.speed, command.turn_rate, dt, traffic.solids());
-    summary.distance_m += std::hypot(robot.pose().x() - before.x(), robot.pose().y() - before.y());
-    time = static_cast<double>(++step) * dt;
-    if (time >= static_cast<double>(summary.frames) / options_.frame_rate_hz - kTimeSlack) emitFrame();
+    if (timeUp(options_.max_duration_s)) break;
+    step(command.speed, command.turn_rate);
   }
-  summary.duration_s = time;
-  summary.collisions = robot.collisionCount();
+  summary.frames = frames_;
+  summary.duration_s = time_;
+  summary.distance_m = distance_m_;
+  summary.collisions = robot_.collisionCount();
   return summary;
 }
 

@@ -1,13 +1,18 @@
 #pragma once
 
+#include <mrpt/core/Clock.h>
 #include <mrpt/poses/CPose2D.h>
 
 #include <functional>
+#include <string>
+#include <vector>
 
 #include "common/ini_section.h"
+#include "observations/rig_frame.h"
 #include "rig/camera_rig.h"
 #include "simulator/differential_drive_robot.h"
 #include "simulator/motion_plan.h"
+#include "simulator/moving_traffic.h"
 #include "simulator/rig_renderer.h"
 #include "simulator/world.h"
 
@@ -37,6 +42,22 @@ struct SimulatedFrame {
   int collisions = 0;  // so far
 };
 
+// A run's time as a timestamp: 2000-01-01T00:00:00Z plus `time_s`, so runs are reproducible.
+mrpt::Clock::time_point simulationTimestamp(double time_s);
+
+// The frame as the rig would deliver it to the mapping pipeline or a rawlog: images, odometry and
+// simulationTimestamp(frame.time_s).
+RigFrame rigFrameOf(const SimulatedFrame& frame, const CameraRig& rig);
+
+// A contact the simulator counted: when, where (true pose) and with what.
+struct CollisionEvent {
+  double time_s = 0.0;
+  double x = 0.0;
+  double y = 0.0;
+  double speed_mps = 0.0;  // the robot's speed just before
+  std::string with;        // a moving obstacle's section name, or "static"
+};
+
 struct SimulationSummary {
   size_t frames = 0;
   double duration_s = 0.0;
@@ -45,22 +66,54 @@ struct SimulationSummary {
   bool plan_completed = false;  // false: stopped at max_duration_s
 };
 
-// Drives a simulated robot through a World along a MotionPlan, starting at the world's start
-// pose, and hands every rig frame (at frame_rate_hz, the first at time 0) to a callback.
+// Drives a simulated robot through a World, from its start pose (or another), with moving
+// traffic: every control period (1 / control_rate_hz) the robot takes a velocity command, and at
+// frame_rate_hz (the first frame at time 0) the rig renders a frame. run() drives it along a
+// MotionPlan; a closed loop (closed_loop/exploration_run.h) steps it itself:
+//   while (true) { if (frameDue()) use(renderFrame()); if (timeUp(limit)) break; step(command); }
 class Simulation {
  public:
   Simulation(const World& world, const CameraRig& rig, const SensorOptions& sensor,
              const DifferentialDriveOptions& robot, const SimulationOptions& options);
+  Simulation(const World& world, const CameraRig& rig, const SensorOptions& sensor,
+             const DifferentialDriveOptions& robot, const SimulationOptions& options,
+             const mrpt::poses::CPose2D& start);
 
-  SimulationSummary run(const MotionPlan& plan,
-                        const std::function<void(const SimulatedFrame&)>& on_frame);
+  // Follows `plan` until it is completed or max_duration_s, handing every frame to `on_frame`.
+  SimulationSummary run(const MotionPlan& plan, const std::function<void(const SimulatedFrame&)>& on_frame);
+
+  // The next frame's time has come.
+  bool frameDue() const;
+  // Renders the frame of now.
+  SimulatedFrame renderFrame();
+  // The simulation clock has reached `limit_s`.
+  bool timeUp(double limit_s) const;
+  // One control period with this command: the traffic moves, then the robot (stopped by what it
+  // touches); contacts are recorded.
+  void step(double speed, double turn_rate);
+
+  double time() const { return time_; }
+  const DifferentialDriveRobot& robot() const { return robot_; }
+  size_t frames() const { return frames_; }
+  double distance() const { return distance_m_; }
+  double topSpeed() const { return top_speed_mps_; }
+  const std::vector<CollisionEvent>& collisionEvents() const { return collision_events_; }
 
  private:
+  void recordCollision(double time_s, double speed_before);
+
   const World& world_;
-  CameraRig rig_;
-  SensorOptions sensor_;
-  DifferentialDriveOptions robot_;
+  DifferentialDriveOptions robot_options_;
   SimulationOptions options_;
+  DifferentialDriveRobot robot_;
+  RigRenderer renderer_;
+  MovingTraffic traffic_;
+  double time_ = 0.0;
+  size_t steps_ = 0;
+  size_t frames_ = 0;
+  double distance_m_ = 0.0;
+  double top_speed_mps_ = 0.0;
+  std::vector<CollisionEvent> collision_events_;
 };
 
 }  // namespace stereonav

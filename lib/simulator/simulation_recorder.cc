@@ -1,18 +1,10 @@
 #include "simulator/simulation_recorder.h"
 
-#include <mrpt/core/Clock.h>
-
 #include <iomanip>
 
 #include "common/atomic_file.h"
-#include "observations/rig_frame.h"
 
 namespace stereonav {
-namespace {
-
-constexpr double kRunEpoch = 946684800.0;  // 2000-01-01T00:00:00Z, seconds since 1970
-
-}  // namespace
 
 SimulationRecorder::SimulationRecorder(const std::string& rawlog_path, const RawlogWriterOptions& options,
                                        const CameraRig& rig)
@@ -21,13 +13,7 @@ SimulationRecorder::SimulationRecorder(const std::string& rawlog_path, const Raw
 }
 
 void SimulationRecorder::record(const SimulatedFrame& frame) {
-  RigFrame rig_frame;
-  rig_frame.timestamp = mrpt::Clock::fromDouble(kRunEpoch + frame.time_s);
-  rig_frame.reference = frame.images.reference;
-  rig_frame.secondaries.assign(frame.images.secondaries.begin(), frame.images.secondaries.end());
-  rig_frame.rig = rig_;
-  rig_frame.odometry = frame.odometry;
-  writer_.write(rig_frame);
+  writer_.write(rigFrameOf(frame, rig_));
   ground_truth_ << frame.time_s << " " << frame.true_pose.x() << " " << frame.true_pose.y() << " "
                 << frame.true_pose.phi() << "\n";
 }

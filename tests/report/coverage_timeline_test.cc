@@ -4,6 +4,7 @@
 
 #include <filesystem>
 
+#include "closed_loop/exploration_run.h"
 #include "simulator/world_loader.h"
 
 namespace stereonav {

@@ -1,4 +1,4 @@
-#include "explorer/reactive_nav_log.h"
+#include "closed_loop/reactive_nav_log.h"
 
 #include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/serialization/CArchive.h>

@@ -1,4 +1,4 @@
-#include "mapping/sigint_stop.h"
+#include "sigint_stop.h"
 
 #include <csignal>
 #include <stdexcept>

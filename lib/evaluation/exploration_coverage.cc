@@ -1,4 +1,4 @@
-#include "explorer/exploration_coverage.h"
+#include "evaluation/exploration_coverage.h"
 
 #include <opencv2/imgproc.hpp>
 

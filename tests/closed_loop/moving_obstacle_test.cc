@@ -7,10 +7,9 @@
 
 #include <filesystem>
 
-#include "explorer/exploration_run.h"
+#include "closed_loop/exploration_run.h"
 #include "mapping/map_outputs.h"
 #include "mapping/stereo_mapper.h"
-#include "observations/rig_frame.h"
 #include "simulator/simulation.h"
 #include "simulator/world_loader.h"
 #include "shipped_config.h"
@@ -68,11 +67,7 @@ TEST(MovingObstacleTest, TheMapForgetsABoxOnceItHasPassed) {
   const OccupancyScale& scale = config.mapping.grid.stereo.update.scale;
   Counts while_there, after;
   simulation.run(parseMotionPlan("0 0 0\n6 0 0\n", "stand.txt"), [&](const SimulatedFrame& frame) {
-    RigFrame rig_frame;
-    rig_frame.reference = frame.images.reference;
-    rig_frame.secondaries.assign(frame.images.secondaries.begin(), frame.images.secondaries.end());
-    rig_frame.rig = simulator.rig;
-    mapper.process(rig_frame, frame.odometry);
+    mapper.process(rigFrameOf(frame, simulator.rig), frame.odometry);
     if (std::abs(frame.time_s - 2.0) < 1e-6) while_there = countPassage(gridOfMap(mapper.map(), scale));
     if (std::abs(frame.time_s - 6.0) < 1e-6) after = countPassage(gridOfMap(mapper.map(), scale));
   });
@@ -103,7 +98,7 @@ speed = 0.5
 TEST(MovingObstacleTest, TheExplorerDoesNotDriveIntoAPersonCrossingItsRoom) {
   const World world = loadWorld(mrpt::config::CConfigFileMemory(kPersonCrossing), "person.ini");
   const ExplorationConfig config = loadExplorationConfig(testing::shippedExplorationConfigPath());
-  const std::string directory = std::string(STEREONAV_BINARY_DIR) + "/test_outputs/explorer/person";
+  const std::string directory = std::string(STEREONAV_BINARY_DIR) + "/test_outputs/closed_loop/person";
   std::filesystem::create_directories(directory);
   ExplorationJob job;
   job.output_prefix = directory + "/person";

@@ -1,4 +1,4 @@
-#include "explorer/reactive_nav_log.h"
+#include "closed_loop/reactive_nav_log.h"
 
 #include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/kinematics/CVehicleVelCmd_DiffDriven.h>
@@ -13,7 +13,7 @@ namespace stereonav {
 namespace {
 
 std::string outputPath(const std::string& name) {
-  const std::string directory = std::string(STEREONAV_BINARY_DIR) + "/test_outputs/explorer/navlog";
+  const std::string directory = std::string(STEREONAV_BINARY_DIR) + "/test_outputs/closed_loop/navlog";
   std::filesystem::create_directories(directory);
   return directory + "/" + name;
 }

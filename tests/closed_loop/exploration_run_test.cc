@@ -1,4 +1,4 @@
-#include "explorer/exploration_run.h"
+#include "closed_loop/exploration_run.h"
 
 #include <mrpt/config/CConfigFileMemory.h>
 
@@ -34,7 +34,7 @@ height = 0.8
 )";
 
 std::string outputDirectory(const std::string& name) {
-  const std::string directory = std::string(STEREONAV_BINARY_DIR) + "/test_outputs/explorer/" + name;
+  const std::string directory = std::string(STEREONAV_BINARY_DIR) + "/test_outputs/closed_loop/" + name;
   std::filesystem::remove_all(directory);
   std::filesystem::create_directories(directory);
   return directory;

@@ -1,4 +1,4 @@
-#include "mapping/progress_meter.h"
+#include "progress_meter.h"
 
 #include <algorithm>
 #include <cmath>

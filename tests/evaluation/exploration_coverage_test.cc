@@ -1,11 +1,11 @@
-#include "explorer/exploration_coverage.h"
+#include "evaluation/exploration_coverage.h"
 
 #include <gtest/gtest.h>
 
 #include <string>
 
 #include "../simulator/world_text.h"
-#include "test_grids.h"
+#include "../explorer/test_grids.h"
 
 namespace stereonav {
 namespace {

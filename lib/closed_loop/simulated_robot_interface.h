@@ -4,7 +4,7 @@
 #include <mrpt/nav/reactive/CRobot2NavInterface.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 
-#include "simulator/differential_drive_robot.h"
+#include "simulator/simulation.h"
 
 namespace stereonav {
 
@@ -20,8 +20,8 @@ enum class PoseSource { kOdometry, kGroundTruth };
 // (commandedSpeed / commandedTurnRate).
 class CSimulatedRobotInterface : public mrpt::nav::CRobot2NavInterface {
  public:
-  // `time_s` is the simulation clock, read on every call.
-  CSimulatedRobotInterface(const DifferentialDriveRobot& robot, const double& time_s, PoseSource pose_source);
+  // The robot and the clock of `simulation`, read on every call.
+  CSimulatedRobotInterface(const Simulation& simulation, PoseSource pose_source);
 
   // The pose the navigator gets (and the map must be built at).
   mrpt::poses::CPose2D pose() const;
@@ -44,7 +44,7 @@ class CSimulatedRobotInterface : public mrpt::nav::CRobot2NavInterface {
   bool senseObstacles(mrpt::maps::CSimplePointsMap& obstacles, mrpt::system::TTimeStamp& timestamp) override;
   // The navigator found the robot not moving though told to (it reverses out); counted.
   void sendApparentCollisionEvent() override { ++apparent_collisions_; }
-  double getNavigationTime() override { return time_s_; }
+  double getNavigationTime() override { return simulation_.time(); }
   void resetNavigationTimer() override {}
 
   double commandedSpeed() const { return speed_; }
@@ -52,8 +52,7 @@ class CSimulatedRobotInterface : public mrpt::nav::CRobot2NavInterface {
   int apparentCollisions() const { return apparent_collisions_; }
 
  private:
-  const DifferentialDriveRobot& robot_;
-  const double& time_s_;
+  const Simulation& simulation_;
   PoseSource pose_source_;
   double speed_ = 0.0;
   double turn_rate_ = 0.0;

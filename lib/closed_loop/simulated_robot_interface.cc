@@ -1,35 +1,29 @@
-#include "explorer/simulated_robot_interface.h"
+#include "closed_loop/simulated_robot_interface.h"
 
-#include <mrpt/core/Clock.h>
 #include <mrpt/kinematics/CVehicleVelCmd_DiffDriven.h>
 
 #include <cmath>
 
 namespace stereonav {
-namespace {
-
-constexpr double kRunEpoch = 946684800.0;  // 2000-01-01T00:00:00Z, as SimulationRecorder stamps frames
-
-}  // namespace
-
-CSimulatedRobotInterface::CSimulatedRobotInterface(const DifferentialDriveRobot& robot, const double& time_s,
-                                                   PoseSource pose_source)
-    : robot_(robot), time_s_(time_s), pose_source_(pose_source) {}
+CSimulatedRobotInterface::CSimulatedRobotInterface(const Simulation& simulation, PoseSource pose_source)
+    : simulation_(simulation), pose_source_(pose_source) {}
 
 mrpt::poses::CPose2D CSimulatedRobotInterface::pose() const {
-  return pose_source_ == PoseSource::kOdometry ? robot_.odometry() : robot_.pose();
+  const DifferentialDriveRobot& robot = simulation_.robot();
+  return pose_source_ == PoseSource::kOdometry ? robot.odometry() : robot.pose();
 }
 
 bool CSimulatedRobotInterface::getCurrentPoseAndSpeeds(mrpt::math::TPose2D& pose,
                                                        mrpt::math::TTwist2D& velocity_global,
                                                        mrpt::system::TTimeStamp& timestamp,
                                                        mrpt::math::TPose2D& odometry, std::string& frame_id) {
-  odometry = robot_.odometry().asTPose();
+  const DifferentialDriveRobot& robot = simulation_.robot();
+  odometry = robot.odometry().asTPose();
   pose = this->pose().asTPose();
-  velocity_global.vx = robot_.speed() * std::cos(pose.phi);
-  velocity_global.vy = robot_.speed() * std::sin(pose.phi);
-  velocity_global.omega = robot_.turnRate();
-  timestamp = mrpt::Clock::fromDouble(kRunEpoch + time_s_);
+  velocity_global.vx = robot.speed() * std::cos(pose.phi);
+  velocity_global.vy = robot.speed() * std::sin(pose.phi);
+  velocity_global.omega = robot.turnRate();
+  timestamp = simulationTimestamp(simulation_.time());
   frame_id = "odom";
   return true;
 }

@@ -1,11 +1,11 @@
-#include "mapping/progress_meter.h"
+#include "progress_meter.h"
 
 #include <gtest/gtest.h>
 
 #include <csignal>
 #include <sstream>
 
-#include "mapping/sigint_stop.h"
+#include "sigint_stop.h"
 
 namespace stereonav {
 namespace {

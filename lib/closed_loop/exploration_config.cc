@@ -1,0 +1,37 @@
+#include "closed_loop/exploration_config.h"
+
+#include <mrpt/config/CConfigFile.h>
+
+#include <fstream>
+
+namespace stereonav {
+
+ExplorationConfig loadExplorationConfig(const std::string& path) {
+  if (!std::ifstream(path)) throw ConfigError(path + ": cannot open the configuration file");
+  const mrpt::config::CConfigFile file(path);
+  ExplorationConfig config;
+  config.simulator = loadSimulatorConfig(file, path);
+  config.explorer = loadIniSection(file, "explorer", [&](IniSection& section) {
+    ExplorerOptions options = loadExplorerOptions(section);
+    const std::string source = section.getString("pose_source", "odometry");
+    if (source == "odometry") {
+      config.pose_source = PoseSource::kOdometry;
+    } else if (source == "ground_truth") {
+      config.pose_source = PoseSource::kGroundTruth;
+    } else {
+      throw ConfigError("[explorer] pose_source: '" + source + "' is neither odometry nor ground_truth");
+    }
+    return options;
+  }, path);
+  try {
+    config.mapping = loadMappingOptions(file);
+  } catch (const ConfigError& error) {
+    throw ConfigError(path + ": " + error.what());
+  }
+  if (config.explorer.robot_radius_m < config.simulator.robot.radius_m) {
+    throw ConfigError(path + ": [explorer] robot_radius_m: smaller than the robot's ([sim_robot] radius_m)");
+  }
+  return config;
+}
+
+}  // namespace stereonav

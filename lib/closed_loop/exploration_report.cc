@@ -1,0 +1,55 @@
+#include "closed_loop/exploration_report.h"
+
+#include <iomanip>
+#include <sstream>
+
+#include "common/json_writer.h"
+
+namespace stereonav {
+
+std::string ExplorationReport::summary() const {
+  std::ostringstream text;
+  text << std::fixed << std::setprecision(1) << "explored " << coverage.free_area_m2 << " m2 free ("
+       << 100.0 * coverage.coverage << "% of the reachable free space; " << 100.0 * coverage.seen_coverage
+       << "% seen), drove " << distance_m << " m in " << sim_time_s << " s simulated (" << wall_time_s
+       << " s wall), " << collisions << " collision(s); stopped: " << stop_reason;
+  return text.str();
+}
+
+std::string ExplorationReport::toJson() const {
+  JsonWriter json;
+  json.beginObject()
+      .key("explored_area_m2").value(coverage.known_area_m2)
+      .key("free_area_m2").value(coverage.free_area_m2)
+      .key("reachable_free_m2").value(coverage.reachable_free_m2)
+      .key("covered_reachable_free_m2").value(coverage.covered_m2)
+      .key("coverage").value(coverage.coverage)
+      .key("seen_reachable_free_m2").value(coverage.seen_m2)
+      .key("seen_coverage").value(coverage.seen_coverage)
+      .key("distance_m").value(distance_m)
+      .key("sim_time_s").value(sim_time_s)
+      .key("wall_time_s").value(wall_time_s)
+      .key("collisions").value(collisions)
+      .key("collision_events").beginArray();
+  for (const CollisionEvent& event : collision_events) {
+    json.beginObject()
+        .key("t").value(event.time_s)
+        .key("x").value(event.x)
+        .key("y").value(event.y)
+        .key("speed").value(event.speed_mps)
+        .key("with").value(event.with)
+        .endObject();
+  }
+  json.endArray()
+      .key("blocked_reversals").value(blocked_reversals)
+      .key("top_speed_mps").value(top_speed_mps)
+      .key("frames").value(frames)
+      .key("frame_rate_hz").value(frame_rate_hz)
+      .key("pipeline_ms_per_frame").value(pipeline_ms_per_frame)
+      .key("start_pose").beginArray().value(start_x).value(start_y).value(start_phi).endArray()
+      .key("stop_reason").value(stop_reason)
+      .endObject();
+  return json.str();
+}
+
+}  // namespace stereonav

@@ -1,0 +1,33 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "evaluation/exploration_coverage.h"
+#include "simulator/simulation.h"
+
+namespace stereonav {
+
+// What a closed-loop exploration achieved (<prefix>.stats.json).
+struct ExplorationReport {
+  ExplorationCoverage coverage;
+  double start_x = 0.0;
+  double start_y = 0.0;
+  double start_phi = 0.0;
+  double distance_m = 0.0;
+  double sim_time_s = 0.0;
+  double wall_time_s = 0.0;
+  double top_speed_mps = 0.0;
+  double frame_rate_hz = 0.0;
+  double pipeline_ms_per_frame = 0.0;  // the mapping pipeline alone
+  size_t frames = 0;
+  int collisions = 0;           // contacts the simulator counted (robot_options' footprint)
+  std::vector<CollisionEvent> collision_events;
+  int blocked_reversals = 0;    // times the explorer found itself blocked and reversed
+  std::string stop_reason;
+
+  std::string summary() const;
+  std::string toJson() const;
+};
+
+}  // namespace stereonav

@@ -1,0 +1,56 @@
+#pragma once
+
+#include <mrpt/poses/CPose2D.h>
+
+#include <map>
+#include <set>
+#include <vector>
+
+#include "explorer/explorer_options.h"
+#include "explorer/frontier_finder.h"
+#include "explorer/navigation_grid.h"
+#include "explorer/world_cell_lattice.h"
+
+namespace stereonav {
+
+// What the explorer has learnt about frontier cells that looking does not resolve (unknown behind
+// something stereo cannot see: under a table top, a textureless wall). Cells are named on a
+// lattice fixed at the first map (world_cell_lattice.h), so the memory holds while the grid grows.
+// A cell is dropped for good when
+//   - a look from up close did not resolve it: it lies within looked_at_range_m and the field of
+//     view of a pose the robot looked from (as the map changes the frontier may move by a cell or
+//     two without becoming any more resolvable);
+//   - it was given up explicitly (the faced cell of a look, every cell of an unreachable frontier);
+//   - it was in plain sight within looked_at_range_m in resolving_views maps.
+class FrontierMemory {
+ public:
+  using WorldCell = WorldCellLattice::Cell;
+
+  explicit FrontierMemory(const ExplorerOptions& options);
+
+  // Fixes the lattice at the first map's frame (later calls do nothing).
+  void anchor(const GridFrame& frame) { lattice_.anchor(frame); }
+  WorldCell worldCell(const NavigationGrid& grid, int col, int row) const;
+
+  // A new map is a new view: the cells of `frontiers` the robot at `pose` has in plain sight
+  // (over known free cells) within looked_at_range_m count one more view.
+  void countCloseViews(const NavigationGrid& grid, const std::vector<Frontier>& frontiers,
+                       const mrpt::poses::CPose2D& pose);
+  bool isDropped(const NavigationGrid& grid, int col, int row) const;
+  // `frontiers` without their dropped cells, and without the ones left under min_frontier_cells.
+  std::vector<Frontier> withoutDropped(const NavigationGrid& grid, std::vector<Frontier> frontiers) const;
+
+  // The robot looked from `pose` without resolving what it faced.
+  void lookedFrom(const mrpt::poses::CPose2D& pose) { looked_from_.push_back(pose); }
+  void drop(const NavigationGrid& grid, const cv::Point& cell) { dropped_.insert(worldCell(grid, cell.x, cell.y)); }
+  size_t looks() const { return looked_from_.size(); }
+
+ private:
+  ExplorerOptions options_;
+  WorldCellLattice lattice_;
+  std::vector<mrpt::poses::CPose2D> looked_from_;
+  std::set<WorldCell> dropped_;
+  std::map<WorldCell, int> close_views_;  // per cell: the maps in which it was in plain sight up close
+};
+
+}  // namespace stereonav

@@ -1,0 +1,79 @@
+#include "explorer/goal_selection.h"
+
+#include <cmath>
+#include <limits>
+
+namespace stereonav {
+
+GoalSelection::GoalSelection(const ExplorerOptions& options) : options_(options) {}
+
+void GoalSelection::carryTargetOver(const NavigationGrid& grid, const std::vector<Frontier>& frontiers,
+                                    const FrontierMemory& memory) {
+  target_cells_.clear();
+  if (!target_ || target_label_ < 0 || target_label_ >= static_cast<int>(frontiers.size())) return;
+  for (const cv::Point& cell : frontiers[static_cast<size_t>(target_label_)].cells) {
+    target_cells_.insert(memory.worldCell(grid, cell.x, cell.y));
+  }
+}
+
+bool GoalSelection::isTarget(const NavigationGrid& grid, const Frontier& frontier, double goal_radius,
+                             const FrontierMemory& memory) const {
+  if (!target_) return false;
+  // The goal region's edge, plus a little for the frontier receding as it is resolved.
+  const double near_target_sq = (goal_radius + 0.3) * (goal_radius + 0.3);
+  for (const cv::Point& cell : frontier.cells) {
+    const double dx = grid.centreX(cell.x) - target_->x, dy = grid.centreY(cell.y) - target_->y;
+    if (dx * dx + dy * dy <= near_target_sq || target_cells_.count(memory.worldCell(grid, cell.x, cell.y)) > 0) {
+      return true;
+    }
+  }
+  return false;
+}
+
+std::vector<GoalCell> GoalSelection::goals(const NavigationGrid& grid, const CostToGoField& field,
+                                           const std::vector<Frontier>& frontiers, double body_radius_m,
+                                           const FrontierMemory& memory) const {
+  const double goal_radius = body_radius_m + options_.goal_distance_m;
+  const int reach = static_cast<int>(std::ceil(goal_radius / grid.resolution()));
+  const double reach_sq = goal_radius * goal_radius / (grid.resolution() * grid.resolution());
+  // Per cell the cheapest seed and its frontier: goals of overlapping frontiers are not repeated.
+  cv::Mat1d seed(grid.height(), grid.width(), std::numeric_limits<double>::infinity());
+  cv::Mat1i label(grid.height(), grid.width(), -1);
+  for (size_t i = 0; i < frontiers.size(); ++i) {
+    const bool waits = frontiers[i].unseen_area_m2 < options_.pocket_area_m2 || !frontiers[i].borders_unknown;
+    const double seed_cost = (isTarget(grid, frontiers[i], goal_radius, memory) ? 0.0 : options_.target_switch_penalty_m) +
+                             (waits ? options_.pocket_penalty_m : 0.0);
+    for (const cv::Point& cell : frontiers[i].cells) {
+      for (int dr = -reach; dr <= reach; ++dr) {
+        for (int dc = -reach; dc <= reach; ++dc) {
+          const int c = cell.x + dc, r = cell.y + dr;
+          if (dc * dc + dr * dr > reach_sq || !grid.contains(c, r) || !field.traversable(c, r)) continue;
+          if (seed_cost < seed(r, c)) {
+            seed(r, c) = seed_cost;
+            label(r, c) = static_cast<int>(i);
+          }
+        }
+      }
+    }
+  }
+  std::vector<GoalCell> goals;
+  for (int row = 0; row < grid.height(); ++row) {
+    for (int col = 0; col < grid.width(); ++col) {
+      if (label(row, col) >= 0) goals.push_back({col, row, seed(row, col), label(row, col)});
+    }
+  }
+  return goals;
+}
+
+void GoalSelection::aimAt(const cv::Point2d& goal, int label) {
+  target_ = goal;
+  target_label_ = label;
+}
+
+void GoalSelection::clear() {
+  target_.reset();
+  target_label_ = -1;
+  target_cells_.clear();
+}
+
+}  // namespace stereonav

@@ -1,0 +1,91 @@
+#include "explorer/frontier_memory.h"
+
+#include <gtest/gtest.h>
+
+#include "test_grids.h"
+
+namespace stereonav {
+namespace {
+
+// Defaults: looked-at range 1 m, 90 degree field of view, 12 resolving views, frontiers of 3 cells.
+ExplorerOptions options() { return ExplorerOptions{}; }
+
+NavigationGrid navigationGrid(const TestGrid& cells) { return NavigationGrid(cells.grid(), {}, NavigationGridOptions{}); }
+
+// 4 m x 4 m of free floor with unknown beyond x = 3 (columns 30..39).
+TestGrid openToTheEast() {
+  TestGrid cells(40, 40);
+  cells.free(0, 0, 29, 39);
+  return cells;
+}
+
+Frontier column(int col, int row0, int row1) {
+  Frontier frontier;
+  for (int row = row0; row <= row1; ++row) frontier.cells.emplace_back(col, row);
+  return frontier;
+}
+
+TEST(FrontierMemoryTest, CellsInViewWithinRangeOfALookAreDropped) {
+  const TestGrid cells = openToTheEast();
+  const NavigationGrid grid = navigationGrid(cells);
+  FrontierMemory memory(options());
+  memory.anchor(cells.grid().frame());
+  // Looking east from (2.2, 2.05): column 29 (x 2.95) is 0.75 m ahead.
+  memory.lookedFrom(mrpt::poses::CPose2D(2.2, 2.05, 0.0));
+  EXPECT_EQ(memory.looks(), 1u);
+  EXPECT_TRUE(memory.isDropped(grid, 29, 20));
+  // 0.75 m to the side and 0.6 m north: 38.7 degrees off the heading, within the 45 degree half view.
+  EXPECT_TRUE(memory.isDropped(grid, 29, 26));
+  // 0.75 m ahead and 0.8 m north: beyond both the range and the view.
+  EXPECT_FALSE(memory.isDropped(grid, 29, 28));
+  // Behind the robot.
+  EXPECT_FALSE(memory.isDropped(grid, 15, 20));
+}
+
+TEST(FrontierMemoryTest, WithoutDroppedRemovesDroppedCellsAndFrontiersLeftTooSmall) {
+  const TestGrid cells = openToTheEast();
+  const NavigationGrid grid = navigationGrid(cells);
+  FrontierMemory memory(options());
+  memory.anchor(cells.grid().frame());
+  memory.drop(grid, {29, 5});
+  memory.drop(grid, {29, 30});
+  memory.drop(grid, {29, 31});
+  const std::vector<Frontier> kept = memory.withoutDropped(grid, {column(29, 3, 8), column(29, 30, 33)});
+  // The first loses one of its six cells; the second keeps two, under the three a frontier needs.
+  ASSERT_EQ(kept.size(), 1u);
+  EXPECT_EQ(kept[0].cells.size(), 5u);
+  for (const cv::Point& cell : kept[0].cells) EXPECT_NE(cell.y, 5);
+}
+
+TEST(FrontierMemoryTest, ACellInPlainSightUpCloseIsDroppedAfterTheResolvingViews) {
+  TestGrid cells = openToTheEast();
+  cells.occupied(25, 21, 25, 35);  // hides the frontier's cells north of row 21 from the robot
+  const NavigationGrid grid = navigationGrid(cells);
+  FrontierMemory memory(options());
+  memory.anchor(cells.grid().frame());
+  const std::vector<Frontier> frontiers = {column(29, 15, 35)};
+  const mrpt::poses::CPose2D pose(2.2, 2.05, 0.0);
+  for (int view = 1; view < 12; ++view) memory.countCloseViews(grid, frontiers, pose);
+  EXPECT_FALSE(memory.isDropped(grid, 29, 20));
+  memory.countCloseViews(grid, frontiers, pose);
+  EXPECT_TRUE(memory.isDropped(grid, 29, 20));
+  // In range and view (0.75 m east, 0.6 m north) but behind the wall: never counted.
+  EXPECT_FALSE(memory.isDropped(grid, 29, 26));
+}
+
+TEST(FrontierMemoryTest, DroppedCellsKeepTheirNamesWhenTheGridGrows) {
+  FrontierMemory memory(options());
+  const DisparityTaggedGrid first(GridLimits{0.0, 4.0, 0.0, 4.0, 0.1, 1.0}, OccupancyScale{});
+  memory.anchor(first.frame());
+  const NavigationGrid small(first, {}, NavigationGridOptions{});
+  memory.drop(small, {29, 20});  // x 2.9 .. 3.0, y 2.0 .. 2.1
+  // The map grew by 1 m west and south: the same place is now cell (39, 30).
+  const DisparityTaggedGrid grown(GridLimits{-1.0, 4.0, -1.0, 4.0, 0.1, 1.0}, OccupancyScale{});
+  memory.anchor(grown.frame());
+  const NavigationGrid larger(grown, {}, NavigationGridOptions{});
+  EXPECT_TRUE(memory.isDropped(larger, 39, 30));
+  EXPECT_FALSE(memory.isDropped(larger, 29, 20));
+}
+
+}  // namespace
+}  // namespace stereonav

@@ -1,0 +1,103 @@
+#include "explorer/safety_guard.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "kinematic_robot.h"
+
+namespace stereonav {
+namespace {
+
+using testing::KinematicRobot;
+
+// Defaults: body radius 0.3, guard margin 0.1, braking 0.8 m/s^2, stop gap 0.3, horizon 2.5.
+ExplorerOptions options() { return ExplorerOptions{}; }
+
+TEST(SafetyGuardTest, BrakesToStopTheGapShortOfAScanObstacleAhead) {
+  KinematicRobot robot({0.0, 0.0, 0.0});
+  robot.time_ = 1.0;  // its scans are stamped 1 s into the run
+  robot.sensed_ = {{1.2, 0.0}};
+  SafetyGuard guard(options());
+  guard.readScan(robot, mrpt::poses::CPose2D(), 0.0, nullptr);
+  const VelocityCommand allowed = guard.guard({1.5, 0.0}, mrpt::poses::CPose2D());
+  // The body's edge plus margin meets the point after 1.2 - 0.3 - 0.1 = 0.8 m; braking at 0.8
+  // m/s^2 to stop 0.3 m short of that allows sqrt(2 * 0.8 * 0.5).
+  // (Scan points are single precision.)
+  EXPECT_NEAR(guard.freeTravel(), 0.8, 1e-6);
+  EXPECT_NEAR(allowed.speed, std::sqrt(0.8), 1e-6);
+  EXPECT_EQ(allowed.turn_rate, 0.0);
+  // A slower command is left alone.
+  EXPECT_EQ(guard.guard({0.5, 0.1}, mrpt::poses::CPose2D()).speed, 0.5);
+}
+
+TEST(SafetyGuardTest, StopsForAnObstacleWithinTheStopGapAndRemembersIt) {
+  KinematicRobot robot({0.0, 0.0, 0.0});
+  robot.time_ = 1.0;  // its scans are stamped 1 s into the run
+  robot.sensed_ = {{0.65, 0.0}};  // free travel 0.25 m, inside the 0.3 m gap
+  SafetyGuard guard(options());
+  guard.readScan(robot, mrpt::poses::CPose2D(), 0.0, nullptr);
+  EXPECT_EQ(guard.guard({1.0, 0.0}, mrpt::poses::CPose2D()).speed, 0.0);
+  // What holds the robot is now a near obstacle, whatever a map says.
+  ASSERT_EQ(guard.nearObstacles().points().size(), 1u);
+  EXPECT_NEAR(guard.nearObstacles().points()[0].x, 0.65, 0.05);
+}
+
+TEST(SafetyGuardTest, PassesCommandsAwayFromTheObstacleAndTurnsOnTheSpot) {
+  KinematicRobot robot({0.0, 0.0, 0.0});
+  robot.time_ = 1.0;  // its scans are stamped 1 s into the run
+  robot.sensed_ = {{0.65, 0.0}};
+  SafetyGuard guard(options());
+  guard.readScan(robot, mrpt::poses::CPose2D(), 0.0, nullptr);
+  const VelocityCommand reverse = guard.guard({-0.2, 0.0}, mrpt::poses::CPose2D());
+  EXPECT_EQ(reverse.speed, -0.2);
+  EXPECT_EQ(guard.freeTravel(), 2.5);  // nothing behind within the horizon
+  const VelocityCommand turn = guard.guard({0.0, 1.0}, mrpt::poses::CPose2D());
+  EXPECT_EQ(turn.speed, 0.0);
+  EXPECT_EQ(turn.turn_rate, 1.0);
+  EXPECT_TRUE(guard.nearObstacles().points().empty());
+}
+
+TEST(SafetyGuardTest, AScanCountsForScanMemorySecondsAfterItWasRead) {
+  KinematicRobot robot({0.0, 0.0, 0.0});
+  robot.time_ = 1.0;  // its scans are stamped 1 s into the run
+  robot.sensed_ = {{1.2, 0.0}};
+  SafetyGuard guard(options());
+  guard.readScan(robot, mrpt::poses::CPose2D(), 0.0, nullptr);
+  robot.sensed_.clear();  // the sensor reports nothing new
+  guard.readScan(robot, mrpt::poses::CPose2D(), 0.9, nullptr);
+  EXPECT_NEAR(guard.guard({1.5, 0.0}, mrpt::poses::CPose2D()).speed, std::sqrt(0.8), 1e-6);
+  guard.readScan(robot, mrpt::poses::CPose2D(), 1.1, nullptr);
+  EXPECT_EQ(guard.guard({1.5, 0.0}, mrpt::poses::CPose2D()).speed, 1.5);
+}
+
+TEST(SafetyGuardTest, FindsTheRobotBlockedAfterBlockedSecondsOfCommandedButNoMotion) {
+  SafetyGuard guard(options());
+  EXPECT_FALSE(guard.blocked(0.5, 0.0, 0.0));
+  EXPECT_FALSE(guard.blocked(0.5, 0.0, 0.9));
+  EXPECT_TRUE(guard.blocked(0.5, 0.0, 1.0));
+  // Moving (above 0.02 m/s) or told to creep (below 0.1 m/s) starts the watch again.
+  EXPECT_FALSE(guard.blocked(0.5, 0.05, 1.1));
+  EXPECT_FALSE(guard.blocked(0.5, 0.0, 1.2));
+  EXPECT_FALSE(guard.blocked(0.05, 0.0, 2.0));
+  EXPECT_FALSE(guard.blocked(0.5, 0.0, 2.5));
+  EXPECT_TRUE(guard.blocked(0.5, 0.0, 3.5));
+  guard.clearBlocked();
+  EXPECT_FALSE(guard.blocked(0.5, 0.0, 3.75));
+}
+
+TEST(SafetyGuardTest, AContactIsRememberedJustBeyondTheFrontOfTheBody) {
+  SafetyGuard guard(options());
+  guard.rememberContact(mrpt::poses::CPose2D(1.0, 2.0, M_PI / 2));
+  const std::vector<cv::Point2d> obstacles = guard.rememberedObstacles();
+  ASSERT_EQ(obstacles.size(), 5u);
+  for (const cv::Point2d& point : obstacles) {
+    EXPECT_NEAR(std::hypot(point.x - 1.0, point.y - 2.0), 0.35, 1e-9);
+    EXPECT_GT(point.y, 2.0 + 0.35 * std::cos(0.6) - 1e-9);  // within 0.6 rad of straight ahead
+  }
+  EXPECT_NEAR(obstacles[2].x, 1.0, 1e-9);
+  EXPECT_NEAR(obstacles[2].y, 2.35, 1e-9);
+}
+
+}  // namespace
+}  // namespace stereonav
