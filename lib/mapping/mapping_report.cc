@@ -59,6 +59,7 @@ std::string MappingReport::summary() const {
   if (frames_without_odometry > 0) {
     text << "; " << frames_without_odometry << " frames without odometry (mapped at the previous pose)";
   }
+  if (frames_localized > 0) text << "; " << frames_localized << " frames corrected by scan matching";
   if (damage) text << "; stopped at damage: " << damage->describe(rawlog_path);
   if (interrupted) text << "; interrupted (Ctrl-C), map saved so far";
   return text.str();
@@ -71,6 +72,7 @@ std::string MappingReport::toJson() const {
        << "  \"complete\": " << (complete() ? "true" : "false") << ",\n"
        << "  \"frames\": " << frames_mapped << ",\n"
        << "  \"frames_without_odometry\": " << frames_without_odometry << ",\n"
+       << "  \"frames_localized\": " << frames_localized << ",\n"
        << "  \"skipped_frames\": {\n    \"total\": " << skipped.total();
   for (size_t reason = 0; reason < kRejectReasonCount; ++reason) {
     json << ",\n    " << jsonString(kRejectReasonKeys[reason]) << ": " << skipped.count[reason];

@@ -35,6 +35,7 @@ class OfficeRunTest : public ::testing::Test {
     MappingJob job;
     job.rawlog_path = kSourceDir + "/rawlogs/office_run.rawlog";
     job.output_prefix = (directory_ / "office").string();
+    job.pose_source = MapPoseSource::kGroundTruth;
     job.ground_truth_poses = loadPoseList(kSourceDir + "/rawlogs/office_run.gt.txt");
     const MappingReport report = mapRawlog(options, job);
     EXPECT_TRUE(report.complete());
