@@ -12,5 +12,6 @@ int runSimulateCommand(const std::vector<std::string>& arguments);
 int runMapCommand(const std::vector<std::string>& arguments);
 int runExploreCommand(const std::vector<std::string>& arguments);
 int runScoreCommand(const std::vector<std::string>& arguments);
+int runImportKittiCommand(const std::vector<std::string>& arguments);
 
 }  // namespace stereonav::app

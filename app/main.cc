@@ -25,6 +25,8 @@ const Command kCommands[] = {
      stereonav::app::runExploreCommand},
     {"score", "score an occupancy map (ROS map_server YAML) against a ground-truth map",
      stereonav::app::runScoreCommand},
+    {"import-kitti", "convert a KITTI odometry sequence into a rawlog with odometry and true poses",
+     stereonav::app::runImportKittiCommand},
 };
 
 void printUsage(std::ostream& out) {
