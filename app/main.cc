@@ -29,6 +29,8 @@ const Command kCommands[] = {
      stereonav::app::runReportCommand},
     {"config", "print every ini section and key the commands accept (docs/configuration.md's skeleton)",
      stereonav::app::runConfigCommand},
+    {"import-kitti", "convert a KITTI odometry sequence into a rawlog with odometry and true poses",
+     stereonav::app::runImportKittiCommand},
 };
 
 void printUsage(std::ostream& out) {

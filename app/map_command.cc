@@ -1,11 +1,13 @@
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 #include <optional>
 
 #include "command_line.h"
 #include "commands.h"
+#include "evaluation/trajectory_error.h"
 #include "mapping/mapping_options.h"
 #include "progress_meter.h"
 #include "mapping/rawlog_mapping.h"
@@ -16,15 +18,20 @@ namespace {
 
 constexpr const char* kUsage =
     "usage: stereonav map --config FILE.ini --rawlog IN.rawlog --out PREFIX\n"
-    "                     [--debug-panels DIR] [--virtual-scans OUT.rawlog]\n"
+    "                     [--poses odometry|localized|ground_truth]\n"
     "                     [--use-ground-truth-poses GT.txt]\n"
+    "                     [--debug-panels DIR] [--virtual-scans OUT.rawlog]\n"
     "Replays a recorded run through the stereo mapping pipeline (sections [rig] [rawlog] [stereo]\n"
-    "[spike_removal] [projection] [grid] [mapping] of FILE.ini), robot poses from the rawlog's\n"
-    "odometry (or GT.txt: 't x y phi' per frame, as 'stereonav simulate' writes), and writes\n"
+    "[spike_removal] [projection] [grid] [mapping] [localization] of FILE.ini) and writes\n"
     "PREFIX.gridmap (MRPT COccupancyGridMap2D), PREFIX.png, PREFIX.yaml + PREFIX.pgm (ROS),\n"
-    "PREFIX.3Dscene (map and path, for SceneViewer3D) and PREFIX.stats.json; optionally one debug\n"
-    "panel PNG per frame in DIR, and a rawlog of virtual laser scans with odometry for icp-slam\n"
-    "(ini/icp_slam_virtual_scans.ini).\n"
+    "PREFIX.3Dscene (map and path, for SceneViewer3D), PREFIX.traj.tum (the pose of every frame,\n"
+    "TUM format) and PREFIX.stats.json; optionally one debug panel PNG per frame in DIR, and a\n"
+    "rawlog of virtual laser scans with odometry for icp-slam (ini/icp_slam_virtual_scans.ini).\n"
+    "Robot poses (--poses, default odometry; ground_truth when only GT.txt is given):\n"
+    "  odometry      the rawlog's odometry (dead reckoning)\n"
+    "  localized     odometry corrected by matching each frame's stereo scan against the map so far\n"
+    "  ground_truth  GT.txt: 't x y phi' (as 'stereonav simulate' writes) or TUM, one per frame\n"
+    "With GT.txt and odometry or localized poses, the trajectory error against GT.txt is printed.\n"
     "A damaged rawlog is mapped up to the damage; Ctrl-C stops after the current frame. Both\n"
     "still write every output.\n"
     "Exit status: 0 the whole rawlog was mapped; 3 partial map (damaged rawlog or Ctrl-C),\n"
@@ -47,11 +54,21 @@ int runMapCommand(const std::vector<std::string>& arguments) {
   job.output_prefix = command_line.required("out");
   job.debug_panel_directory = command_line.value("debug-panels").value_or("");
   job.virtual_scan_rawlog = command_line.value("virtual-scans").value_or("");
-  const std::optional<std::string> poses_path = command_line.value("use-ground-truth-poses");
+  const std::optional<std::string> truth_path = command_line.value("use-ground-truth-poses");
+  const std::optional<std::string> pose_source = command_line.value("poses");
   command_line.rejectUnknown();
+  try {
+    job.pose_source = pose_source ? parseMapPoseSource(*pose_source)
+                                  : (truth_path ? MapPoseSource::kGroundTruth : MapPoseSource::kOdometry);
+  } catch (const std::invalid_argument& error) {
+    throw UsageError(std::string("--poses: ") + error.what());
+  }
+  if (job.pose_source == MapPoseSource::kGroundTruth && !truth_path) {
+    throw UsageError("--poses ground_truth needs --use-ground-truth-poses GT.txt");
+  }
 
   const MappingOptions options = loadMappingOptionsFile(config_path);
-  if (poses_path) job.ground_truth_poses = loadPoseList(*poses_path);
+  if (truth_path) job.ground_truth_poses = loadPoseList(*truth_path);
 
   const bool interactive = isatty(STDERR_FILENO) != 0;
   std::optional<ProgressMeter> progress;
@@ -70,8 +87,14 @@ int runMapCommand(const std::vector<std::string>& arguments) {
   }
   std::cerr << "stereonav map: " << report.summary() << "\n"
             << "stereonav map: wrote " << job.output_prefix
-            << ".{gridmap,png,yaml,pgm,3Dscene,stats.json}"
+            << ".{gridmap,png,yaml,pgm,3Dscene,traj.tum,stats.json}"
             << (job.virtual_scan_rawlog.empty() ? "" : " and " + job.virtual_scan_rawlog) << "\n";
+  if (truth_path && job.pose_source != MapPoseSource::kGroundTruth && report.frames_mapped > 0) {
+    std::vector<mrpt::poses::CPose2D> truth = job.ground_truth_poses;
+    truth.resize(std::min(truth.size(), report.path.size()));
+    std::cerr << "stereonav map: trajectory error against " << *truth_path << ":\n"
+              << trajectoryError(report.path, truth).toText();
+  }
   if (report.frames_mapped == 0) {
     std::cerr << "stereonav map: no frame of " << job.rawlog_path << " could be mapped\n";
     return 1;

@@ -1,11 +1,13 @@
 #include <iostream>
 #include <sstream>
+#include <stdexcept>
 
 #include "command_line.h"
 #include "commands.h"
 #include "evaluation/map_score.h"
 #include "evaluation/ros_map.h"
 #include "evaluation/score_overlay.h"
+#include "evaluation/trajectory_error.h"
 #include "mapping/rawlog_mapping.h"
 
 namespace stereonav::app {
@@ -28,7 +30,30 @@ constexpr const char* kUsage =
     "the free cells 4-connected to --start, else to the first pose; with neither, all free cells.\n"
     "--overlay draws what was counted: map-occupied green (correct) / red (wrong), true obstacles\n"
     "black (found) / blue (missed) / dark grey (not counted), magenta false free, light green\n"
-    "free space the map calls free.\n";
+    "free space the map calls free.\n"
+    "\n"
+    "usage: stereonav score --traj EST --traj-truth GT [--json]\n"
+    "Absolute trajectory error of EST against GT, each 't x y phi' or TUM 't x y z qx qy qz qw'\n"
+    "per line with one pose per frame (e.g. 'stereonav map' PREFIX.traj.tum against the run's\n"
+    "OUT.gt.txt): EST is moved rigidly onto GT's first pose, then the position error's RMS, max and\n"
+    "final value (drift) and the heading error are reported.\n";
+
+int runTrajectoryScore(CommandLine& command_line) {
+  const std::string estimate_path = command_line.required("traj");
+  const std::string truth_path = command_line.required("traj-truth");
+  const bool json = command_line.flag("json");
+  command_line.rejectUnknown();
+  const std::vector<mrpt::poses::CPose2D> estimate = loadPoseList(estimate_path);
+  const std::vector<mrpt::poses::CPose2D> truth = loadPoseList(truth_path);
+  if (estimate.size() != truth.size()) {
+    throw std::runtime_error(estimate_path + " has " + std::to_string(estimate.size()) +
+                             " poses, " + truth_path + " " + std::to_string(truth.size()) +
+                             ": they must pair one to one");
+  }
+  const TrajectoryError error = trajectoryError(estimate, truth);
+  std::cout << (json ? error.toJson() : error.toText());
+  return 0;
+}
 
 std::pair<double, double> parsePoint(const std::string& text) {
   std::istringstream in(text);
@@ -48,6 +73,7 @@ int runScoreCommand(const std::vector<std::string>& arguments) {
     std::cout << kUsage;
     return 0;
   }
+  if (command_line.value("traj")) return runTrajectoryScore(command_line);
   const std::string map_path = command_line.required("map");
   const std::string truth_path = command_line.required("truth");
   const std::optional<std::string> poses_path = command_line.value("poses");

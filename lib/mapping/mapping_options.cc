@@ -41,6 +41,7 @@ MappingOptions loadMappingOptions(const mrpt::config::CConfigFileBase& config) {
     options.grid = loadGridMapOptions(grid);
   }
   options.mapper = loadIniSection(config, "mapping", loadMapperOptions);
+  options.localization = loadIniSection(config, "localization", loadLocalizationOptions);
   return options;
 }
 

@@ -7,6 +7,7 @@
 
 #include "column_projection/projection_options.h"
 #include "disparity/stereo_options.h"
+#include "localization/localization_options.h"
 #include "observations/camera_rig_merge.h"
 #include "occupancy_grid/grid_map_factory.h"
 #include "rig/camera_rig.h"
@@ -33,6 +34,7 @@ struct MapperOptions {
 //   [projection]     body volume, section 3.3
 //   [grid]           model, limits, update rule, sensor model (sections 3.2, 3.4, 4.3)
 //   [mapping]        MapperOptions
+//   [localization]   scan matching against the map when mapping with localized poses
 // Every section is read by its stage's own loader and rejects keys nobody reads.
 struct MappingOptions {
   std::optional<CameraRig> rig;
@@ -43,6 +45,7 @@ struct MappingOptions {
   ProjectionOptions projection;
   GridMapOptions grid;
   MapperOptions mapper;
+  LocalizationOptions localization;
 };
 
 // Throws ConfigError "[section] key: why" for a bad or unknown key.

@@ -31,6 +31,7 @@ std::string MappingReport::summary() const {
   if (frames_without_odometry > 0) {
     text << "; " << frames_without_odometry << " frames without odometry (mapped at the previous pose)";
   }
+  if (frames_localized > 0) text << "; " << frames_localized << " frames corrected by scan matching";
   if (damage) text << "; stopped at damage: " << damage->describe(rawlog_path);
   if (interrupted) text << "; interrupted (Ctrl-C), map saved so far";
   return text.str();
@@ -43,6 +44,7 @@ std::string MappingReport::toJson() const {
       .key("complete").value(complete())
       .key("frames").value(frames_mapped)
       .key("frames_without_odometry").value(frames_without_odometry)
+      .key("frames_localized").value(frames_localized)
       .key("skipped_frames").beginObject().key("total").value(skipped.total());
   for (size_t reason = 0; reason < kRejectReasonCount; ++reason) {
     json.key(kRejectReasonKeys[reason]).value(skipped.count[reason]);

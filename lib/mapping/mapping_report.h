@@ -1,5 +1,7 @@
 #pragma once
 
+#include <mrpt/poses/CPose2D.h>
+
 #include <optional>
 #include <string>
 #include <vector>
@@ -14,6 +16,9 @@ struct MappingReport {
   std::string rawlog_path;
   size_t frames_mapped = 0;
   size_t frames_without_odometry = 0;  // mapped at the previous frame's pose
+  // With localized poses: frames whose scan match corrected odometry (the others kept it).
+  size_t frames_localized = 0;
+  std::vector<mrpt::poses::CPose2D> path;  // the pose each frame was mapped at
   SkippedFrames skipped;
   std::optional<RawlogDamage> damage;  // where reading stopped, if the rawlog is damaged
   bool interrupted = false;            // stopped by request (Ctrl-C) after a whole frame

@@ -2,13 +2,13 @@
 
 #include <algorithm>
 #include <chrono>
-#include <fstream>
-#include <sstream>
-#include <stdexcept>
 #include <memory>
+#include <stdexcept>
 #include <vector>
 
 #include "common/atomic_file.h"
+#include "localization/scan_localizer.h"
+#include "localization/tum_trajectory.h"
 #include "mapping/debug_panel.h"
 #include "mapping/map_outputs.h"
 #include "mapping/stereo_mapper.h"
@@ -17,23 +17,17 @@
 namespace stereonav {
 
 std::vector<mrpt::poses::CPose2D> loadPoseList(const std::string& path) {
-  std::ifstream file(path);
-  if (!file) throw std::runtime_error(path + ": cannot read pose list");
   std::vector<mrpt::poses::CPose2D> poses;
-  std::string line;
-  for (int number = 1; std::getline(file, line); ++number) {
-    const size_t comment = line.find('#');
-    if (comment != std::string::npos) line.erase(comment);
-    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
-    std::istringstream fields(line);
-    double t, x, y, phi;
-    std::string rest;
-    if (!(fields >> t >> x >> y >> phi) || (fields >> rest)) {
-      throw std::runtime_error(path + ":" + std::to_string(number) + ": expected 't x y phi'");
-    }
-    poses.emplace_back(x, y, phi);
-  }
+  for (const StampedPose& stamped : loadTrajectory(path)) poses.push_back(stamped.pose);
   return poses;
+}
+
+MapPoseSource parseMapPoseSource(const std::string& name) {
+  if (name == "odometry") return MapPoseSource::kOdometry;
+  if (name == "localized") return MapPoseSource::kLocalized;
+  if (name == "ground_truth") return MapPoseSource::kGroundTruth;
+  throw std::invalid_argument("pose source '" + name +
+                              "': expected odometry, localized or ground_truth");
 }
 
 RawlogReaderOptions rawlogReaderOptions(const MappingOptions& options) {
@@ -56,13 +50,20 @@ MappingReport mapRawlog(const MappingOptions& options, const MappingJob& job,
   MappingReport report;
   report.rawlog_path = job.rawlog_path;
 
+  if (job.pose_source == MapPoseSource::kGroundTruth && job.ground_truth_poses.empty()) {
+    throw std::invalid_argument("ground-truth poses asked for, but the pose list is empty");
+  }
   MappingOptions run_options = options;
-  run_options.mapper.virtual_scans = options.mapper.virtual_scans || !job.virtual_scan_rawlog.empty();
+  run_options.mapper.virtual_scans = options.mapper.virtual_scans ||
+                                     !job.virtual_scan_rawlog.empty() ||
+                                     job.pose_source == MapPoseSource::kLocalized;
   RawlogReader reader(job.rawlog_path, rawlogReaderOptions(options));
   std::unique_ptr<StereoMapper> mapper;  // made for the first frame's rig
   std::unique_ptr<DebugPanelRenderer> panels;
+  std::unique_ptr<ScanLocalizer> localizer;
+  std::vector<StampedPose> trajectory;
   VirtualScanRecorder virtual_scans;
-  std::vector<mrpt::poses::CPose2D> path;
+  std::vector<mrpt::poses::CPose2D>& path = report.path;
   mrpt::poses::CPose2D odometry;  // the last recorded; a frame without keeps it
   mrpt::poses::CPose2D pose;      // the one mapped with
   double matched_pixels = 0.0, kept_pixels = 0.0, pixels = 0.0;
@@ -72,6 +73,10 @@ MappingReport mapRawlog(const MappingOptions& options, const MappingJob& job,
       MergedCameraRig rig = mergeCameraRigs(options.rig, frame->rig, options.calibration_tolerance);
       report.calibration_warnings = std::move(rig.warnings);
       mapper = std::make_unique<StereoMapper>(run_options, rig.rig);
+      if (job.pose_source == MapPoseSource::kLocalized) {
+        localizer = std::make_unique<ScanLocalizer>(
+            options.localization, rig.rig.reference.focal_px * rig.rig.baseline_m);
+      }
       if (!job.debug_panel_directory.empty()) {
         panels = std::make_unique<DebugPanelRenderer>(run_options, rig.rig);
       }
@@ -81,17 +86,30 @@ MappingReport mapRawlog(const MappingOptions& options, const MappingJob& job,
     } else {
       ++report.frames_without_odometry;
     }
-    if (job.ground_truth_poses.empty()) {
-      pose = odometry;
-    } else if (path.size() < job.ground_truth_poses.size()) {
-      pose = job.ground_truth_poses[path.size()];
-    } else {
-      throw std::invalid_argument("the ground-truth pose list has " +
-                                  std::to_string(job.ground_truth_poses.size()) +
-                                  " poses, the rawlog has more frames");
+    mapper->observe(*frame);
+    switch (job.pose_source) {
+      case MapPoseSource::kOdometry:
+        pose = odometry;
+        break;
+      case MapPoseSource::kLocalized: {
+        const ScanMatch& match = localizer->update(
+            odometry, *mapper->virtualScan(), gridOfMap(mapper->map(), options.grid.stereo.update.scale));
+        pose = match.pose;
+        if (match.corrected) ++report.frames_localized;
+        break;
+      }
+      case MapPoseSource::kGroundTruth:
+        if (path.size() >= job.ground_truth_poses.size()) {
+          throw std::invalid_argument("the ground-truth pose list has " +
+                                      std::to_string(job.ground_truth_poses.size()) +
+                                      " poses, the rawlog has more frames");
+        }
+        pose = job.ground_truth_poses[path.size()];
+        break;
     }
-    mapper->process(*frame, pose);
+    mapper->insertLastObservation(pose);
     path.push_back(pose);
+    trajectory.push_back({mrpt::Clock::toDouble(frame->timestamp), pose});
     const DisparityScanner& scanner = mapper->scanner();
     matched_pixels += static_cast<double>(scanner.matchedPixels());
     kept_pixels += static_cast<double>(scanner.keptPixels());
@@ -122,6 +140,7 @@ MappingReport mapRawlog(const MappingOptions& options, const MappingJob& job,
   } else {
     saveMapOutputs(*createGridMap(options.grid), scale, path, job.output_prefix);
   }
+  saveTumTrajectory(job.output_prefix + ".traj.tum", trajectory);
   if (!job.virtual_scan_rawlog.empty()) virtual_scans.save(job.virtual_scan_rawlog);
   report.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -22,6 +22,11 @@ StereoMapper::StereoMapper(const MappingOptions& options, const CameraRig& rig)
 }
 
 void StereoMapper::process(const RigFrame& frame, const mrpt::poses::CPose2D& robot_pose) {
+  observe(frame);
+  insertLastObservation(robot_pose);
+}
+
+void StereoMapper::observe(const RigFrame& frame) {
   const DisparityScan& scan = scanner_.scan(frame, times_);
   disparity_observation_->scan = scan;
   disparity_observation_->timestamp = frame.timestamp;
@@ -31,6 +36,9 @@ void StereoMapper::process(const RigFrame& frame, const mrpt::poses::CPose2D& ro
     virtual_scan_->timestamp = frame.timestamp;
     virtual_scan_->sensorLabel = kVirtualScanLabel;
   }
+}
+
+void StereoMapper::insertLastObservation(const mrpt::poses::CPose2D& robot_pose) {
   {
     ScopedStageTimer timer(times_, PipelineStage::kGridUpdate);
     map_->insertObservation(*map_input_, mrpt::poses::CPose3D(robot_pose));

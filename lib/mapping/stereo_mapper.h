@@ -28,6 +28,12 @@ class StereoMapper {
   // dead reckoning, section 5).
   void process(const RigFrame& frame, const mrpt::poses::CPose2D& robot_pose);
 
+  // process() in its two halves, for a caller that needs the frame's scan before it knows the
+  // pose (a localizer matching the scan against the map): observe() runs the frame through the
+  // pipeline up to the scans, insertLastObservation() puts them into the map.
+  void observe(const RigFrame& frame);
+  void insertLastObservation(const mrpt::poses::CPose2D& robot_pose);
+
   const DisparityScanner& scanner() const { return scanner_; }
   // The last frame's scan as an MRPT observation, in the robot frame.
   const CObservationDisparityScan& disparityScan() const { return *disparity_observation_; }

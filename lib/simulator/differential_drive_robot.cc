@@ -35,6 +35,13 @@ DifferentialDriveOptions loadDifferentialDriveOptions(IniSection& section) {
   options.odometry_distance_noise = section.getNonNegative("odometry_distance_noise", options.odometry_distance_noise);
   options.odometry_turn_noise = section.getNonNegative("odometry_turn_noise", options.odometry_turn_noise);
   options.odometry_drift_rad_per_m = section.getNonNegative("odometry_drift_rad_per_m", options.odometry_drift_rad_per_m);
+  options.odometry_distance_bias = section.getDouble("odometry_distance_bias", options.odometry_distance_bias);
+  options.odometry_turn_bias = section.getDouble("odometry_turn_bias", options.odometry_turn_bias);
+  for (const double bias : {options.odometry_distance_bias, options.odometry_turn_bias}) {
+    if (!(std::abs(bias) < 0.5)) {
+      throw ConfigError("[" + section.name() + "] odometry_*_bias: must be within (-0.5, 0.5)");
+    }
+  }
   options.seed = section.getInt("seed", options.seed);
   return options;
 }
@@ -111,9 +118,11 @@ bool DifferentialDriveRobot::step(double commanded_speed, double commanded_turn_
 
   std::normal_distribution<double> unit(0.0, 1.0);
   const double measured_distance =
-      travelled + unit(random_) * options_.odometry_distance_noise * std::abs(travelled);
+      travelled * (1.0 + options_.odometry_distance_bias) +
+      unit(random_) * options_.odometry_distance_noise * std::abs(travelled);
   const double measured_turn =
-      turned + unit(random_) * (options_.odometry_turn_noise * std::abs(turned) +
+      turned * (1.0 + options_.odometry_turn_bias) +
+      unit(random_) * (options_.odometry_turn_noise * std::abs(turned) +
                                 options_.odometry_drift_rad_per_m * std::abs(travelled));
   odometry_ = odometry_ + arcIncrement(measured_distance, measured_turn);
   odometry_.normalizePhi();

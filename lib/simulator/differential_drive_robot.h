@@ -22,12 +22,17 @@ struct DifferentialDriveOptions {
   double odometry_distance_noise = 0.02;
   double odometry_turn_noise = 0.02;
   double odometry_drift_rad_per_m = 0.005;
+  // Systematic errors, the same on every step as a real base's calibration error: the measured
+  // distance is (1 + odometry_distance_bias) times the driven one (a wheel radius off by that
+  // fraction), the measured turn (1 + odometry_turn_bias) times the turned one (the wheel base).
+  double odometry_distance_bias = 0.0;
+  double odometry_turn_bias = 0.0;
   int seed = 1;
 };
 
 // Section [sim_robot]: max_speed_mps, max_turn_rate, max_acceleration, max_turn_acceleration,
 // radius_m, height_m, odometry_distance_noise, odometry_turn_noise, odometry_drift_rad_per_m,
-// seed.
+// odometry_distance_bias, odometry_turn_bias, seed.
 DifferentialDriveOptions loadDifferentialDriveOptions(IniSection& section);
 
 // A differential-drive robot with a circular footprint driving through a World: velocity

@@ -8,6 +8,7 @@
 
 #include "evaluation/map_score.h"
 #include "evaluation/ros_map.h"
+#include "evaluation/trajectory_error.h"
 #include "mapping/mapping_options.h"
 #include "mapping/rawlog_mapping.h"
 
@@ -29,16 +30,18 @@ class OfficeRunTest : public ::testing::Test {
 
   // Maps the run with ini/office_run.ini changed by `adjust`, and scores the map.
   template <typename Adjust>
-  MapScore mapAndScore(Adjust adjust) {
+  MapScore mapAndScore(Adjust adjust, MapPoseSource poses = MapPoseSource::kGroundTruth) {
     MappingOptions options = loadMappingOptionsFile(kSourceDir + "/ini/office_run.ini");
     adjust(options);
     MappingJob job;
     job.rawlog_path = kSourceDir + "/rawlogs/office_run.rawlog";
     job.output_prefix = (directory_ / "office").string();
+    job.pose_source = poses;
     job.ground_truth_poses = loadPoseList(kSourceDir + "/rawlogs/office_run.gt.txt");
     const MappingReport report = mapRawlog(options, job);
     EXPECT_TRUE(report.complete());
     EXPECT_EQ(report.frames_mapped, job.ground_truth_poses.size());
+    last_path_ = report.path;
 
     MapScoreOptions score_options;
     score_options.poses = job.ground_truth_poses;
@@ -49,6 +52,7 @@ class OfficeRunTest : public ::testing::Test {
   }
 
   fs::path directory_;
+  std::vector<mrpt::poses::CPose2D> last_path_;
 };
 
 TEST_F(OfficeRunTest, ShippedConfigurationMapsTheOfficeWalls) {
@@ -64,6 +68,20 @@ TEST_F(OfficeRunTest, ShippedConfigurationMapsTheOfficeWalls) {
   EXPECT_GE(score.recall(), 0.80);
   EXPECT_LE(score.falseFree(), 0.005);
   EXPECT_GT(score.coverage(), 0.0);
+}
+
+TEST_F(OfficeRunTest, LocalizedPosesMapAsWellAsTheTrueOnes) {
+  // The run's odometry is the simulator's (2 % per metre): localizing by scan matching must not
+  // make it worse, and the map from the localized poses scores within 0.03 of the true-pose map.
+  const MapScore truth = mapAndScore([](MappingOptions&) {});
+  const MapScore localized = mapAndScore([](MappingOptions&) {}, MapPoseSource::kLocalized);
+  const TrajectoryError error =
+      trajectoryError(last_path_, loadPoseList(kSourceDir + "/rawlogs/office_run.gt.txt"));
+  std::cout << localized.toText() << error.toText();
+  EXPECT_NEAR(localized.precision(), truth.precision(), 0.03);
+  EXPECT_NEAR(localized.recall(), truth.recall(), 0.03);
+  EXPECT_LE(error.rms_m, 0.05);
+  EXPECT_LE(error.max_m, 0.15);
 }
 
 TEST_F(OfficeRunTest, FarReadingsMarkCellsBehindTheWalls) {

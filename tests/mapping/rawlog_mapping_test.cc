@@ -230,6 +230,7 @@ TEST_F(RawlogMappingTest, GroundTruthPosesReplaceOdometry) {
     std::ofstream(path("poses.txt"), std::ios::app) << 0.2 * i << " " << poseOfFrame(i).x() << " 1.0 0.0\n";
   }
   MappingJob job = jobFor(path("full.rawlog"), "shifted");
+  job.pose_source = MapPoseSource::kGroundTruth;
   job.ground_truth_poses = loadPoseList(path("poses.txt"));
   ASSERT_EQ(job.ground_truth_poses.size(), kFrames);
   mapRawlog(MappingOptions{}, job);

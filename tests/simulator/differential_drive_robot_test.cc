@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <mrpt/config/CConfigFileMemory.h>
+
+#include <algorithm>
 #include <cmath>
 
 #include "world_text.h"
@@ -135,6 +138,29 @@ TEST(DifferentialDriveRobot, OdometryDriftsReproduciblyFromItsSeed) {
   const double error = std::hypot(a.odometry().x() - a.pose().x(), a.odometry().y() - a.pose().y());
   EXPECT_GT(error, 1e-4);
   EXPECT_LT(error, 1.0);  // ~9.5 m travelled at 2 % per metre
+}
+
+TEST(DifferentialDriveRobot, WheelCalibrationBiasScalesOdometry) {
+  // A wheel radius 2 % large over-reads every metre by 2 %; a wheel base 5 % small over-reads
+  // every turn by 5 %. Straight 2 m, then a quarter turn on the spot.
+  const World open_floor = worldFromText("");
+  DifferentialDriveOptions options = exactOdometry();
+  options.odometry_distance_bias = 0.02;
+  options.odometry_turn_bias = 0.05;
+  DifferentialDriveRobot robot(open_floor, options, mrpt::poses::CPose2D(0, 0, 0));
+  while (robot.pose().x() < 2.0 - 1e-9) robot.step(std::min(1.0, (2.0 - robot.pose().x()) / 0.1), 0.0, 0.1, {});
+  for (int i = 0; i < 200 && robot.speed() > 0.0; ++i) robot.step(0.0, 0.0, 0.1, {});
+  const double driven = robot.pose().x();
+  EXPECT_NEAR(robot.odometry().x(), 1.02 * driven, 1e-9);
+  const double heading_before = robot.pose().phi();
+  for (int i = 0; i < 100 && std::abs(robot.pose().phi() - heading_before) < M_PI / 2 - 1e-3; ++i) {
+    robot.step(0.0, std::min(1.0, (M_PI / 2 - (robot.pose().phi() - heading_before)) / 0.1), 0.1, {});
+  }
+  EXPECT_NEAR(robot.odometry().phi(), 1.05 * robot.pose().phi(), 1e-9);
+
+  mrpt::config::CConfigFileMemory config("[sim_robot]\nodometry_distance_bias = 0.6\n");
+  IniSection section(config, "sim_robot");
+  EXPECT_THROW(loadDifferentialDriveOptions(section), ConfigError);
 }
 
 }  // namespace

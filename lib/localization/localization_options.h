@@ -1,0 +1,50 @@
+#pragma once
+
+#include "common/ini_section.h"
+
+namespace stereonav {
+
+// How ScanLocalizer corrects odometry by matching each stereo scan against the map built so far
+// (section [localization]). The paper maps with dead reckoning and names its drift as the open
+// problem (section 5); these are the knobs of the correlative matcher that closes it.
+struct LocalizationOptions {
+  // Only readings nearer than this take part: a stereo reading's range error grows with the
+  // square of its range (Z^2 / (f B) per pixel of disparity, paper section 3.2), so far ones
+  // would pull the match more than they can tell.
+  double max_range_m = 2.5;
+  // Readings are thinned to one per this distance along the scan, so a near wall seen by many
+  // columns does not outvote the rest.
+  double point_spacing_m = 0.05;
+  // A reading's range uncertainty: disparity_sigma_px of disparity at its range, and never less
+  // than min_point_sigma_m (the map's cells quantise obstacles too).
+  double disparity_sigma_px = 0.3;
+  double min_point_sigma_m = 0.05;
+  // The chance that a reading matches nothing in the map (new obstacles, mismatches): caps the
+  // penalty a single reading can give a pose.
+  double outlier_probability = 0.2;
+  // The poses tried around the odometry prediction: +/- window, in steps.
+  double window_m = 0.3;
+  double window_deg = 10.0;
+  double step_m = 0.025;
+  double step_deg = 1.0;
+  // How far odometry is trusted between two frames, a Gaussian prior on the correction: its
+  // sigma is prior_sigma_m plus prior_sigma_m_per_m of the distance driven since the last frame,
+  // and prior_sigma_deg plus prior_sigma_per_rad of the angle turned (radians per radian).
+  double prior_sigma_m = 0.02;
+  double prior_sigma_m_per_m = 0.1;
+  double prior_sigma_deg = 1.0;
+  double prior_sigma_per_rad = 0.1;
+  // Fewer matched readings than this (within 3 sigma of a map obstacle at the best pose), or a
+  // smaller fraction of the readings: keep odometry (the scan sees mostly what the map has not).
+  int min_matched_points = 10;
+  double min_matched_fraction = 0.5;
+  // A direction of the pose is corrected only if the match pins it down: the spread of the
+  // scan's likelihood along it, as a fraction of the window, is below this. Along a straight
+  // corridor the likelihood is flat and the position along it keeps odometry.
+  double max_spread = 0.1;
+};
+
+// Keys as the member names; all optional, steps and windows positive.
+LocalizationOptions loadLocalizationOptions(IniSection& section);
+
+}  // namespace stereonav

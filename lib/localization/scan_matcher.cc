@@ -1,0 +1,210 @@
+#include "localization/scan_matcher.h"
+
+#include <mrpt/core/bits_math.h>
+#include <mrpt/math/wrap2pi.h>
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+
+namespace stereonav {
+namespace {
+
+// A pose offset from the prior, in steps of the search grid.
+struct Offset {
+  double x = 0.0;
+  double y = 0.0;
+  double phi = 0.0;
+};
+
+class PoseScorer {
+ public:
+  PoseScorer(const std::vector<ScanPoint>& points, const ObstacleDistanceField& field,
+             const mrpt::poses::CPose2D& prior, const PriorSigma& prior_sigma,
+             const LocalizationOptions& options)
+      : points_(points),
+        field_(field),
+        prior_(prior),
+        outlier_(options.outlier_probability),
+        log_outlier_(std::log(options.outlier_probability)),
+        inlier_weight_(1.0 - options.outlier_probability),
+        prior_precision_xy_(1.0 / mrpt::square(prior_sigma.position_m)),
+        prior_precision_phi_(1.0 / mrpt::square(prior_sigma.heading_rad)) {
+    rotated_.resize(points.size());
+  }
+
+  // Readings turned by the prior's heading plus `dphi`; the log-likelihoods that follow use them.
+  void rotate(double dphi) {
+    const double c = std::cos(prior_.phi() + dphi), s = std::sin(prior_.phi() + dphi);
+    for (size_t i = 0; i < points_.size(); ++i) {
+      rotated_[i] = {c * points_[i].x - s * points_[i].y, s * points_[i].x + c * points_[i].y};
+    }
+  }
+
+  double logLikelihood(double dx, double dy) const {
+    double sum = 0.0;
+    const double x0 = prior_.x() + dx, y0 = prior_.y() + dy;
+    for (size_t i = 0; i < points_.size(); ++i) {
+      const double d = field_.distance(x0 + rotated_[i][0], y0 + rotated_[i][1]);
+      const double z = d / points_[i].sigma;
+      sum += z > 6.0 ? log_outlier_ : std::log(outlier_ + inlier_weight_ * std::exp(-0.5 * z * z));
+    }
+    return sum;
+  }
+
+  double logPrior(double dx, double dy, double dphi) const {
+    return -0.5 * ((dx * dx + dy * dy) * prior_precision_xy_ + dphi * dphi * prior_precision_phi_);
+  }
+
+  int matchedPoints(const mrpt::poses::CPose2D& pose) const {
+    int matched = 0;
+    for (const ScanPoint& point : points_) {
+      const mrpt::poses::CPose2D world = pose + mrpt::poses::CPose2D(point.x, point.y, 0.0);
+      if (field_.distance(world.x(), world.y()) < 3.0 * point.sigma) ++matched;
+    }
+    return matched;
+  }
+
+ private:
+  const std::vector<ScanPoint>& points_;
+  const ObstacleDistanceField& field_;
+  mrpt::poses::CPose2D prior_;
+  double outlier_;
+  double log_outlier_;
+  double inlier_weight_;
+  double prior_precision_xy_;
+  double prior_precision_phi_;
+  std::vector<std::array<double, 2>> rotated_;
+};
+
+}  // namespace
+
+std::vector<ScanPoint> matchablePoints(const mrpt::obs::CObservation2DRangeScan& scan,
+                                       double focal_baseline_px_m,
+                                       const LocalizationOptions& options) {
+  std::vector<ScanPoint> points;
+  const mrpt::poses::CPose2D sensor(scan.sensorPose);
+  double last_x = std::numeric_limits<double>::infinity(), last_y = last_x;
+  for (size_t ray = 0; ray < scan.getScanSize(); ++ray) {
+    if (!scan.getScanRangeValidity(ray)) continue;
+    const double range = scan.getScanRange(ray);
+    if (!(range > 0.0 && range <= options.max_range_m)) continue;
+    const double angle = scan.getScanAngle(ray);
+    const mrpt::poses::CPose2D point =
+        sensor + mrpt::poses::CPose2D(range * std::cos(angle), range * std::sin(angle), 0.0);
+    if (std::hypot(point.x() - last_x, point.y() - last_y) < options.point_spacing_m) continue;
+    last_x = point.x();
+    last_y = point.y();
+    const double range_sigma = focal_baseline_px_m > 0.0
+                                   ? range * range / focal_baseline_px_m * options.disparity_sigma_px
+                                   : 0.0;
+    points.push_back({point.x(), point.y(), std::max(options.min_point_sigma_m, range_sigma)});
+  }
+  return points;
+}
+
+PriorSigma priorSigmaAfter(const mrpt::poses::CPose2D& motion, const LocalizationOptions& options) {
+  return {options.prior_sigma_m + options.prior_sigma_m_per_m * motion.norm(),
+          mrpt::DEG2RAD(options.prior_sigma_deg) +
+              options.prior_sigma_per_rad * std::abs(mrpt::math::wrapToPi(motion.phi()))};
+}
+
+ScanMatch matchScan(const std::vector<ScanPoint>& points, const ObstacleDistanceField& field,
+                    const mrpt::poses::CPose2D& prior, const PriorSigma& prior_sigma,
+                    const LocalizationOptions& options) {
+  ScanMatch match;
+  match.pose = prior;
+  match.points = static_cast<int>(points.size());
+  if (match.points < options.min_matched_points || !field.hasObstacles()) return match;
+
+  PoseScorer scorer(points, field, prior, prior_sigma, options);
+  const double step_phi = mrpt::DEG2RAD(options.step_deg);
+  const int steps_xy = static_cast<int>(std::round(options.window_m / options.step_m));
+  const int steps_phi = static_cast<int>(std::round(options.window_deg / options.step_deg));
+  // Each direction normalised by its window (at least one step), so spreads compare.
+  const Eigen::Vector3d scale(std::max(steps_xy, 1) * options.step_m,
+                              std::max(steps_xy, 1) * options.step_m,
+                              std::max(steps_phi, 1) * step_phi);
+
+  // Coarse search: the best pose under likelihood x prior, and the likelihood's own spread.
+  std::vector<std::pair<Eigen::Vector3d, double>> likelihoods;
+  likelihoods.reserve(static_cast<size_t>((2 * steps_xy + 1) * (2 * steps_xy + 1) * (2 * steps_phi + 1)));
+  double best_score = -std::numeric_limits<double>::infinity();
+  Offset best;
+  for (int k = -steps_phi; k <= steps_phi; ++k) {
+    const double dphi = k * step_phi;
+    scorer.rotate(dphi);
+    for (int j = -steps_xy; j <= steps_xy; ++j) {
+      for (int i = -steps_xy; i <= steps_xy; ++i) {
+        const double dx = i * options.step_m, dy = j * options.step_m;
+        const double log_likelihood = scorer.logLikelihood(dx, dy);
+        likelihoods.emplace_back(Eigen::Vector3d(dx, dy, dphi).cwiseQuotient(scale), log_likelihood);
+        const double score = log_likelihood + scorer.logPrior(dx, dy, dphi);
+        if (score > best_score) {
+          best_score = score;
+          best = {dx, dy, dphi};
+        }
+      }
+    }
+  }
+  double max_log_likelihood = -std::numeric_limits<double>::infinity();
+  for (const auto& entry : likelihoods) max_log_likelihood = std::max(max_log_likelihood, entry.second);
+  double weight_sum = 0.0;
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d second_moment = Eigen::Matrix3d::Zero();
+  for (const auto& [offset, log_likelihood] : likelihoods) {
+    const double weight = std::exp(log_likelihood - max_log_likelihood);
+    weight_sum += weight;
+    mean += weight * offset;
+    second_moment += weight * offset * offset.transpose();
+  }
+  mean /= weight_sum;
+  match.spread = second_moment / weight_sum - mean * mean.transpose();
+
+  // Fine search around the coarse best, a quarter step apart.
+  const Offset coarse = best;
+  const double fine_xy = options.step_m / 4, fine_phi = step_phi / 4;
+  for (int k = -4; k <= 4; ++k) {
+    const double dphi = coarse.phi + k * fine_phi;
+    scorer.rotate(dphi);
+    for (int j = -4; j <= 4; ++j) {
+      for (int i = -4; i <= 4; ++i) {
+        const double dx = coarse.x + i * fine_xy, dy = coarse.y + j * fine_xy;
+        const double score = scorer.logLikelihood(dx, dy) + scorer.logPrior(dx, dy, dphi);
+        if (score > best_score) {
+          best_score = score;
+          best = {dx, dy, dphi};
+        }
+      }
+    }
+  }
+
+  // Keep the correction along the directions the scan pins down only.
+  const Eigen::Vector3d correction = Eigen::Vector3d(best.x, best.y, best.phi).cwiseQuotient(scale);
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> directions(match.spread);
+  Eigen::Vector3d kept = Eigen::Vector3d::Zero();
+  for (int d = 0; d < 3; ++d) {
+    if (std::sqrt(std::max(directions.eigenvalues()(d), 0.0)) >= options.max_spread) continue;
+    const Eigen::Vector3d direction = directions.eigenvectors().col(d);
+    kept += direction.dot(correction) * direction;
+    ++match.constrained_directions;
+  }
+  kept = kept.cwiseProduct(scale);
+  const mrpt::poses::CPose2D corrected(prior.x() + kept.x(), prior.y() + kept.y(),
+                                       mrpt::math::wrapToPi(prior.phi() + kept.z()));
+  match.matched_points = scorer.matchedPoints(corrected);
+  if (match.matched_points < options.min_matched_points ||
+      match.matched_points < options.min_matched_fraction * match.points ||
+      match.constrained_directions == 0) {
+    match.matched_points = scorer.matchedPoints(prior);
+    return match;
+  }
+  match.pose = corrected;
+  match.corrected = true;
+  return match;
+}
+
+}  // namespace stereonav

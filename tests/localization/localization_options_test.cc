@@ -1,0 +1,50 @@
+#include "localization/localization_options.h"
+
+#include <gtest/gtest.h>
+
+#include "support/options_loading.h"
+
+namespace stereonav {
+namespace {
+
+using test_support::configErrorOf;
+using test_support::loadSectionText;
+
+TEST(LocalizationOptionsTest, LoadsEveryKey) {
+  const LocalizationOptions options = loadSectionText(
+      "localization",
+      "max_range_m = 3\npoint_spacing_m = 0.1\ndisparity_sigma_px = 0.5\nmin_point_sigma_m = 0.04\n"
+      "outlier_probability = 0.3\nwindow_m = 0.5\nwindow_deg = 12\nstep_m = 0.05\nstep_deg = 2\n"
+      "prior_sigma_m = 0.2\nprior_sigma_m_per_m = 0.05\nprior_sigma_deg = 4\nprior_sigma_per_rad = 0.2\n"
+      "min_matched_points = 20\nmin_matched_fraction = 0.7\nmax_spread = 0.3\n",
+      loadLocalizationOptions);
+  EXPECT_DOUBLE_EQ(options.max_range_m, 3.0);
+  EXPECT_DOUBLE_EQ(options.point_spacing_m, 0.1);
+  EXPECT_DOUBLE_EQ(options.disparity_sigma_px, 0.5);
+  EXPECT_DOUBLE_EQ(options.min_point_sigma_m, 0.04);
+  EXPECT_DOUBLE_EQ(options.outlier_probability, 0.3);
+  EXPECT_DOUBLE_EQ(options.window_m, 0.5);
+  EXPECT_DOUBLE_EQ(options.window_deg, 12.0);
+  EXPECT_DOUBLE_EQ(options.step_m, 0.05);
+  EXPECT_DOUBLE_EQ(options.step_deg, 2.0);
+  EXPECT_DOUBLE_EQ(options.prior_sigma_m, 0.2);
+  EXPECT_DOUBLE_EQ(options.prior_sigma_m_per_m, 0.05);
+  EXPECT_DOUBLE_EQ(options.prior_sigma_deg, 4.0);
+  EXPECT_DOUBLE_EQ(options.prior_sigma_per_rad, 0.2);
+  EXPECT_EQ(options.min_matched_points, 20);
+  EXPECT_DOUBLE_EQ(options.min_matched_fraction, 0.7);
+  EXPECT_DOUBLE_EQ(options.max_spread, 0.3);
+}
+
+TEST(LocalizationOptionsTest, RejectsBadValuesAndUnknownKeys) {
+  for (const char* body : {"outlier_probability = 1\n", "step_m = 0\n", "min_matched_points = 0\n",
+                           "max_range_m = -1\n", "window = 0.3\n",
+                           "min_matched_fraction = 1.5\n"}) {
+    const std::string error =
+        configErrorOf([&] { loadSectionText("localization", body, loadLocalizationOptions); });
+    EXPECT_NE(error.find("[localization]"), std::string::npos) << body << ": " << error;
+  }
+}
+
+}  // namespace
+}  // namespace stereonav
