@@ -41,6 +41,18 @@ void rejectAmbiguousMatches(cv::Mat1f& disparity, const SadMatch& match, double 
   }
 }
 
+void rejectIndistinctMatches(cv::Mat1f& disparity, const SadMatch& match, double ratio) {
+  CV_Assert(disparity.size() == match.best_score.size() && disparity.size() == match.second_score.size());
+  for (int y = 0; y < disparity.rows; ++y) {
+    float* row = disparity.ptr<float>(y);
+    const int* best = match.best_score.ptr<int>(y);
+    const int* second = match.second_score.ptr<int>(y);
+    for (int x = 0; x < disparity.cols; ++x) {
+      row[x] = static_cast<double>(best[x]) < ratio * static_cast<double>(second[x]) ? row[x] : kInvalidDisparity;
+    }
+  }
+}
+
 void rejectInconsistentMatches(cv::Mat1f& disparity, const cv::Mat1f& swapped, const SecondaryCamera& first,
                                double max_difference) {
   CV_Assert(disparity.size() == swapped.size());
