@@ -28,7 +28,7 @@ void StereoMatcher::compute(const StereoFrame& frame, cv::Mat1f& disparity) {
     textureMap(frame.reference, options_.window, options_.texture_sigma, texture_);
     rejectLowTexture(disparity, texture_, options_.texture_threshold);
   }
-  rejectAmbiguousMatches(disparity, match, options_.uniqueness_threshold);
+  if (options_.uniqueness_threshold < 1.0) rejectAmbiguousMatches(disparity, match, options_.uniqueness_threshold);
   if (!match.second_score.empty()) rejectIndistinctMatches(disparity, match, options_.second_best_ratio);
   if (!options_.left_right_check) return;
   const SecondaryCamera& first = frame.secondaries.front().camera;

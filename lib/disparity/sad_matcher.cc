@@ -68,6 +68,7 @@ struct PreparedFrame {
   bool best_half = false;
   bool subpixel = false;
   bool second_best = false;  // find the runner-up score (SadMatch::second_score)
+  bool sum_scores = true;    // add up all candidates' scores (SadMatch::score_sum)
   // Binocular horizontal rig with the left-right check: +1 if candidate d of pixel x is pixel
   // x - d of the secondary image, -1 if x + d; 0 = no reverse match (SadMatch::reverse_disparity).
   int reverse_sign = 0;
@@ -422,7 +423,7 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
   };
 
   // Horizontal running sum of the column sums, winner-takes-all and sum of scores for row y.
-  const bool subpixel = frame.subpixel, second_best = frame.second_best;
+  const bool subpixel = frame.subpixel, second_best = frame.second_best, sum_scores = frame.sum_scores;
   const int min_disparity = frame.min_disparity;
   const auto matchRow = [&](int y, auto combine_groups) {
     constexpr bool kCombine = decltype(combine_groups)::value;
@@ -437,7 +438,7 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
         cv::v_store(scores + g * padded + b, total);
       }
     }
-    const Acc* curve = kCombine ? combined : scores;  // the combined score of every candidate
+    const Acc* const curve = kCombine ? combined : scores;  // the combined score of every candidate
     // Locals, so that the compiler keeps them in registers across the stores below.
     Acc* const group_scores = scores;
     const Acc* const all_sums = column_sums;
@@ -486,9 +487,9 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
           // Scores are never negative: OR with the all-ones-but-sign padding makes those lanes
           // the largest score, AND with its complement makes them zero.
           const Vec& pad = padding[chunk - unpadded_chunks];
-          score_sum += Lanes::widenSum(score & ~pad);
+          if (sum_scores) score_sum += Lanes::widenSum(score & ~pad);
           score = score | pad;
-        } else {
+        } else if (sum_scores) {
           score_sum += Lanes::widenSum(score);
         }
         best = cv::v_min(best, score);
@@ -518,14 +519,19 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
       best_row[x] = static_cast<int>(best_score);
       sum_row[x] = cv::v_reduce_sum(score_sum);
       if (second_best) {
-        // The lowest score with the best and its two neighbours (and the padding) masked out.
+        // The lowest score with the best and its two neighbours (and the padding) masked out;
+        // only the chunks holding those neighbours need the mask.
+        const int near_first = std::max(j - 1, 0) / Lanes::kCount, near_last = (j + 1) / Lanes::kCount;
         const Vec low = Lanes::all(j - 1), high = Lanes::all(j + 1), highest = Lanes::all(kMaxScore);
-        Vec runner_up = highest, index = lane_index;
+        Vec runner_up = highest;
         for (int chunk = 0; chunk < chunk_count; ++chunk) {
           Vec score = cv::v_load(curve + chunk * Lanes::kCount);
           if (chunk >= unpadded_chunks) score = score | padding[chunk - unpadded_chunks];
-          runner_up = cv::v_min(runner_up, cv::v_select((index >= low) & (index <= high), highest, score));
-          index = Lanes::add(index, Lanes::all(Lanes::kCount));
+          if (chunk >= near_first && chunk <= near_last) {
+            const Vec index = Lanes::add(lane_index, Lanes::all(chunk * Lanes::kCount));
+            score = cv::v_select((index >= low) & (index <= high), highest, score);
+          }
+          runner_up = cv::v_min(runner_up, score);
         }
         const Acc second = static_cast<Acc>(cv::v_reduce_min(runner_up));
         second_row[x] = second == kMaxScore ? std::numeric_limits<int>::max() : static_cast<int>(second);
@@ -583,6 +589,7 @@ const SadMatch& SadMatcher::match(const StereoFrame& frame) {
   prepared.best_half = options.combination == CameraCombination::kBestHalf;
   prepared.subpixel = options.subpixel;
   prepared.second_best = options.second_best_ratio < 1.0;
+  prepared.sum_scores = options.uniqueness_threshold < 1.0;
   const auto prefilter = [&](const cv::Mat1b& image, cv::Mat1b& filtered) {
     prefilterImage(image, options.prefilter, options.prefilter_cap, options.texture_sigma, filtered);
   };

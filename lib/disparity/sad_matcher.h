@@ -12,7 +12,8 @@ namespace stereonav {
 // Winner-takes-all output of the multi-baseline SAD engine, before validation. For every
 // reference pixel: the disparity whose combined window score is lowest (the smallest such
 // disparity on ties), that score, and the sum of the scores of all candidates (the paper's
-// "quality of match" test divides the first by the last). With options.second_best_ratio < 1,
+// "quality of match" test divides the first by the last; zero when
+// options.uniqueness_threshold is 1, the test off). With options.second_best_ratio < 1,
 // also the lowest score of the candidates more than one disparity away from the best (INT_MAX if
 // there is none); otherwise second_score is empty. Pixels that no secondary camera sees at every
 // candidate disparity (image borders) are kInvalidDisparity with zero scores.

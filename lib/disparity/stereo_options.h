@@ -40,7 +40,7 @@ struct StereoOptions {
   double texture_sigma = 1.0;  // Gaussian sigma of the LoG, pixels
   // Uniqueness: best window score / sum of the scores of all candidates must be below this. A
   // flat score curve has ratio 1/(number of candidates), so the useful range scales with the
-  // disparity range: 0.02 suits the default 32 candidates, 0.04 suits 16; 1 keeps every pixel.
+  // disparity range: 0.02 suits the default 32 candidates, 0.04 suits 16; 1 = off.
   double uniqueness_threshold = 0.02;
   // Distinctiveness, a uniqueness test whose meaning does not depend on the number of candidates
   // (as cv::StereoBM's uniquenessRatio): best score / lowest score of the candidates more than one
