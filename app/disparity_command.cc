@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <optional>
 
 #include "command_line.h"
 #include "commands.h"
@@ -11,6 +12,7 @@
 #include "disparity/disparity_evaluation.h"
 #include "disparity/disparity_io.h"
 #include "disparity/stereo_options.h"
+#include "spike_removal/spike_filter.h"
 
 namespace stereonav::app {
 namespace {
@@ -18,10 +20,16 @@ namespace {
 constexpr const char* kUsage =
     "usage: stereonav disparity --config FILE.ini --ref IMG --cam IMG:BX:BY [--cam ...]\n"
     "                           --out OUT.pfm|OUT.png [--max-disp N] [--window N] [--subpixel]\n"
-    "                           [--backend sad|bm|sgbm] [--gt GT --gt-scale S] [--colour OUT.png]\n"
+    "                           [--backend sad|bm|sgbm] [--spike-removal] [--colour OUT.png]\n"
+    "                           [--gt GT --gt-scale S [--gt-nonocc MASK] [--gt-disc MASK] [--gt-border N]]\n"
     "Disparity image of the reference view (options from the [stereo] section of the ini;\n"
     "command-line values override it). Each --cam is a secondary view and its baseline: a point\n"
-    "at disparity d at (x, y) in the reference is at (x - BX*d, y - BY*d) in it.\n";
+    "at disparity d at (x, y) in the reference is at (x - BX*d, y - BY*d) in it.\n"
+    "--spike-removal applies the pipeline's next stage, [spike_removal] of the same ini.\n"
+    "--gt scores against Middlebury ground truth (value / S = disparity, 0 unknown) on all known\n"
+    "pixels, on the non-occluded ones (--gt-nonocc mask, 255 = evaluated; without it, derived from\n"
+    "the truth and the first --cam) and near discontinuities (--gt-disc), ignoring a border of N\n"
+    "pixels (default 18).\n";
 
 bool endsWith(const std::string& text, const std::string& suffix) {
   return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
@@ -59,19 +67,32 @@ SecondaryView parseCamera(const std::string& text) {
   return view;
 }
 
-StereoOptions loadOptions(const std::string& path) {
-  if (!std::ifstream(path)) throw std::runtime_error(path + ": cannot read config file");
-  mrpt::config::CConfigFile config(path);
-  IniSection section(config, "stereo");
-  StereoOptions options = loadStereoOptions(section);
-  section.rejectUnknownKeys();
-  return options;
+// Scores against ground truth, on a mask of the same size (checked here so that the message names
+// the file).
+cv::Mat1b loadMaskFor(const std::string& path, const cv::Mat1f& ground_truth) {
+  const cv::Mat1b mask = loadEvaluationMask(path);
+  if (mask.size() != ground_truth.size()) {
+    throw std::runtime_error(path + ": mask is " + std::to_string(mask.cols) + "x" + std::to_string(mask.rows) +
+                             ", the ground truth is " + std::to_string(ground_truth.cols) + "x" +
+                             std::to_string(ground_truth.rows));
+  }
+  return mask;
+}
+
+void printEvaluation(const std::string& name, const DisparityEvaluation& result) {
+  char line[240];
+  std::snprintf(line, sizeof(line),
+                "evaluation %s: density %.2f%%  bad-1.0 %.2f%%  bad-2.0 %.2f%%  mean abs error %.3f px  (%d known "
+                "pixels)\n",
+                name.c_str(), 100.0 * result.density, 100.0 * result.bad_1, 100.0 * result.bad_2,
+                result.mean_abs_error, result.known_pixels);
+  std::cout << line;
 }
 
 }  // namespace
 
 int runDisparityCommand(const std::vector<std::string>& arguments) {
-  CommandLine command_line(arguments, {"help", "subpixel"});
+  CommandLine command_line(arguments, {"help", "subpixel", "spike-removal"});
   if (command_line.flag("help")) {
     std::cout << kUsage;
     return 0;
@@ -86,6 +107,10 @@ int runDisparityCommand(const std::vector<std::string>& arguments) {
   const auto backend = command_line.value("backend");
   const auto ground_truth_path = command_line.value("gt");
   const auto ground_truth_scale = command_line.doubleValue("gt-scale");
+  const auto nonoccluded_path = command_line.value("gt-nonocc");
+  const auto discontinuity_path = command_line.value("gt-disc");
+  const auto border = command_line.intValue("gt-border");
+  const bool spike_removal = command_line.flag("spike-removal");
   const auto colour_path = command_line.value("colour");
   command_line.rejectUnknown();
 
@@ -100,6 +125,10 @@ int runDisparityCommand(const std::vector<std::string>& arguments) {
     throw UsageError("--gt and --gt-scale go together");
   }
   if (ground_truth_scale && *ground_truth_scale <= 0) throw UsageError("--gt-scale must be positive");
+  if (!ground_truth_path && (nonoccluded_path || discontinuity_path || border)) {
+    throw UsageError("--gt-nonocc, --gt-disc and --gt-border need --gt");
+  }
+  if (border && *border < 0) throw UsageError("--gt-border " + std::to_string(*border) + ": must be >= 0");
   if (window && (*window < 3 || *window % 2 == 0)) {
     throw UsageError("--window " + std::to_string(*window) + ": must be odd and >= 3");
   }
@@ -107,7 +136,11 @@ int runDisparityCommand(const std::vector<std::string>& arguments) {
     throw UsageError("--max-disp " + std::to_string(*max_disparity) + ": must be positive");
   }
 
-  StereoOptions options = loadOptions(config_path);
+  if (!std::ifstream(config_path)) throw std::runtime_error(config_path + ": cannot read config file");
+  const mrpt::config::CConfigFile config(config_path);
+  StereoOptions options = loadIniSection(config, "stereo", loadStereoOptions, config_path);
+  std::optional<SpikeFilter> spike_filter;
+  if (spike_removal) spike_filter.emplace(loadIniSection(config, "spike_removal", loadSpikeRemovalOptions, config_path));
   if (max_disparity) options.max_disparity = *max_disparity;
   if (window) options.window = *window;
   if (subpixel) options.subpixel = true;
@@ -138,6 +171,7 @@ int runDisparityCommand(const std::vector<std::string>& arguments) {
   }
   validateStereoOptions(options);
   cv::Mat1f ground_truth;
+  cv::Mat1b nonoccluded, discontinuities;
   if (ground_truth_path) {
     ground_truth = loadMiddleburyGroundTruth(*ground_truth_path, *ground_truth_scale);
     if (ground_truth.size() != frame.reference.size()) {
@@ -145,22 +179,29 @@ int runDisparityCommand(const std::vector<std::string>& arguments) {
                                std::to_string(ground_truth.rows) + ", the reference " + reference_path + " is " +
                                std::to_string(frame.reference.cols) + "x" + std::to_string(frame.reference.rows));
     }
+    nonoccluded = nonoccluded_path ? loadMaskFor(*nonoccluded_path, ground_truth)
+                                   : nonOccludedMask(ground_truth, frame.secondaries.front().camera);
+    if (discontinuity_path) discontinuities = loadMaskFor(*discontinuity_path, ground_truth);
   }
 
-  const cv::Mat1f disparity = computeDisparity(frame, options);
+  cv::Mat1f disparity = computeDisparity(frame, options);
+  if (spike_filter) {
+    cv::Mat1b rejected;
+    spike_filter->apply(disparity, rejected);
+  }
   writeDisparityImage(out_path, disparity);
   if (colour_path) writeDisparityColourPng(*colour_path, disparity, options.max_disparity);
   std::cout << "disparity: " << out_path << " (" << disparity.cols << "x" << disparity.rows << ", "
             << frame.secondaries.size() << " secondary view" << (frame.secondaries.size() > 1 ? "s" : "")
-            << ", backend " << toString(options.backend) << ")\n";
+            << ", backend " << toString(options.backend) << (spike_filter ? ", spike removal" : "") << ")\n";
   if (ground_truth_path) {
-    const DisparityEvaluation result = evaluateDisparity(disparity, ground_truth);
-    char line[200];
-    std::snprintf(line, sizeof(line),
-                  "evaluation: density %.2f%%  bad-1.0 %.2f%%  bad-2.0 %.2f%%  mean abs error %.3f px  (%d known pixels)\n",
-                  100.0 * result.density, 100.0 * result.bad_1, 100.0 * result.bad_2, result.mean_abs_error,
-                  result.known_pixels);
-    std::cout << line;
+    const int ignored_border = border.value_or(18);
+    printEvaluation("all", evaluateDisparity(disparity, ground_truth, ignored_border));
+    printEvaluation(nonoccluded_path ? "nonocc" : "nonocc (derived from the ground truth)",
+                    evaluateDisparity(disparity, ground_truth, ignored_border, nonoccluded));
+    if (discontinuity_path) {
+      printEvaluation("disc", evaluateDisparity(disparity, ground_truth, ignored_border, discontinuities));
+    }
   }
   return 0;
 }

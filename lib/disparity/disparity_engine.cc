@@ -10,7 +10,7 @@ namespace stereonav {
 StereoMatcher::StereoMatcher(const StereoOptions& options)
     : options_(options),
       reference_matcher_(options),
-      swapped_matcher_(options.left_right_check ? std::make_unique<SadMatcher>(options) : nullptr) {}
+      swapped_matcher_(nullptr) {}
 
 void StereoMatcher::compute(const StereoFrame& frame, cv::Mat1f& disparity) {
   checkStereoFrame(frame);
@@ -28,12 +28,18 @@ void StereoMatcher::compute(const StereoFrame& frame, cv::Mat1f& disparity) {
     textureMap(frame.reference, options_.window, options_.texture_sigma, texture_);
     rejectLowTexture(disparity, texture_, options_.texture_threshold);
   }
-  rejectAmbiguousMatches(disparity, match, options_.uniqueness_threshold);
-  if (swapped_matcher_) {
-    const SadMatch& swapped = swapped_matcher_->match(swapReferenceWithFirstSecondary(frame));
-    rejectInconsistentMatches(disparity, swapped.disparity, frame.secondaries.front().camera,
-                              options_.left_right_max_diff);
+  if (options_.uniqueness_threshold < 1.0) rejectAmbiguousMatches(disparity, match, options_.uniqueness_threshold);
+  if (!match.second_score.empty()) rejectIndistinctMatches(disparity, match, options_.second_best_ratio);
+  if (!options_.left_right_check) return;
+  const SecondaryCamera& first = frame.secondaries.front().camera;
+  if (!match.reverse_disparity.empty()) {
+    rejectInconsistentMatches(disparity, match.reverse_disparity, first, options_.left_right_max_diff);
+    return;
   }
+  // Several cameras, or one off the horizontal: the swapped rig is matched again.
+  if (!swapped_matcher_) swapped_matcher_ = std::make_unique<SadMatcher>(options_);
+  const SadMatch& swapped = swapped_matcher_->match(swapReferenceWithFirstSecondary(frame));
+  rejectInconsistentMatches(disparity, swapped.disparity, first, options_.left_right_max_diff);
 }
 
 cv::Mat1f computeDisparity(const StereoFrame& frame, const StereoOptions& options) {

@@ -29,7 +29,8 @@ class StereoMatcher {
  private:
   StereoOptions options_;
   SadMatcher reference_matcher_;
-  std::unique_ptr<SadMatcher> swapped_matcher_;  // for the left-right check
+  // For the left-right check where the reference match has no reverse disparity (created on first use).
+  std::unique_ptr<SadMatcher> swapped_matcher_;
   cv::Mat1f texture_;
 };
 

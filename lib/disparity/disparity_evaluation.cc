@@ -2,7 +2,9 @@
 
 #include <opencv2/imgcodecs.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "disparity/disparity_image.h"
@@ -22,9 +24,46 @@ cv::Mat1f loadMiddleburyGroundTruth(const std::string& path, double scale) {
   return ground_truth;
 }
 
-DisparityEvaluation evaluateDisparity(const cv::Mat1f& disparity, const cv::Mat1f& ground_truth, int border) {
+cv::Mat1b loadEvaluationMask(const std::string& path) {
+  const cv::Mat raw = cv::imread(path, cv::IMREAD_GRAYSCALE);
+  if (raw.empty()) throw std::runtime_error(path + ": cannot read evaluation mask");
+  return raw == 255;
+}
+
+cv::Mat1b nonOccludedMask(const cv::Mat1f& ground_truth, const SecondaryCamera& camera, float tolerance) {
+  const int width = ground_truth.cols, height = ground_truth.rows;
+  // The largest disparity landing on each pixel of the camera's image.
+  cv::Mat1f front(height, width, -std::numeric_limits<float>::infinity());
+  const auto landing = [&](int x, int y, float d, int& xs, int& ys) {
+    xs = static_cast<int>(std::lround(x - camera.bx * d));
+    ys = static_cast<int>(std::lround(y - camera.by * d));
+    return xs >= 0 && xs < width && ys >= 0 && ys < height;
+  };
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const float d = ground_truth(y, x);
+      int xs = 0, ys = 0;
+      if (isValidDisparity(d) && landing(x, y, d, xs, ys)) front(ys, xs) = std::max(front(ys, xs), d);
+    }
+  }
+  cv::Mat1b visible(height, width, uchar{0});
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const float d = ground_truth(y, x);
+      int xs = 0, ys = 0;
+      if (isValidDisparity(d) && landing(x, y, d, xs, ys) && front(ys, xs) <= d + tolerance) visible(y, x) = 255;
+    }
+  }
+  return visible;
+}
+
+DisparityEvaluation evaluateDisparity(const cv::Mat1f& disparity, const cv::Mat1f& ground_truth, int border,
+                                      const cv::Mat1b& mask) {
   if (disparity.size() != ground_truth.size()) {
     throw std::invalid_argument("evaluation: disparity and ground truth differ in size");
+  }
+  if (!mask.empty() && mask.size() != ground_truth.size()) {
+    throw std::invalid_argument("evaluation: mask and ground truth differ in size");
   }
   DisparityEvaluation result;
   int bad_1 = 0, bad_2 = 0;
@@ -32,7 +71,7 @@ DisparityEvaluation evaluateDisparity(const cv::Mat1f& disparity, const cv::Mat1
   for (int y = border; y < disparity.rows - border; ++y) {
     for (int x = border; x < disparity.cols - border; ++x) {
       const float truth = ground_truth(y, x);
-      if (!isValidDisparity(truth)) continue;
+      if (!isValidDisparity(truth) || (!mask.empty() && mask(y, x) == 0)) continue;
       ++result.known_pixels;
       const float d = disparity(y, x);
       if (!isValidDisparity(d)) continue;

@@ -4,6 +4,8 @@
 
 #include <string>
 
+#include "rig/camera_rig.h"
+
 namespace stereonav {
 
 // Scores of a disparity image against ground truth, Middlebury style. Only pixels with known
@@ -21,8 +23,22 @@ struct DisparityEvaluation {
 // (returned as kInvalidDisparity). Throws std::runtime_error naming the file.
 cv::Mat1f loadMiddleburyGroundTruth(const std::string& path, double scale);
 
+// A Middlebury evaluation mask (nonocc.png, all.png, disc.png): 255 = evaluated, any other value
+// (0 or the 128 some masks use for occlusions) = not. Returns 255 / 0. Throws std::runtime_error
+// naming the file.
+cv::Mat1b loadEvaluationMask(const std::string& path);
+
+// The pixels of `ground_truth` that `camera` sees, for pairs that come without a non-occluded mask:
+// the truth is forward-warped into that camera (pixel (x, y) at disparity d lands at
+// (x - bx*d, y - by*d), rounded) and a pixel is occluded if it lands outside the image or where
+// another pixel with a disparity more than `tolerance` larger lands too (it is in front). Middlebury
+// derives its masks the same way. 255 = visible and known, 0 = occluded or unknown.
+cv::Mat1b nonOccludedMask(const cv::Mat1f& ground_truth, const SecondaryCamera& camera, float tolerance = 1.0f);
+
 // Compares `disparity` with `ground_truth` (unknown = kInvalidDisparity), ignoring `border`
-// pixels on every side (18 for the classic Middlebury evaluation).
-DisparityEvaluation evaluateDisparity(const cv::Mat1f& disparity, const cv::Mat1f& ground_truth, int border = 18);
+// pixels on every side (18 for the classic Middlebury evaluation) and, if `mask` is not empty,
+// the pixels where it is 0.
+DisparityEvaluation evaluateDisparity(const cv::Mat1f& disparity, const cv::Mat1f& ground_truth, int border = 18,
+                                      const cv::Mat1b& mask = cv::Mat1b());
 
 }  // namespace stereonav

@@ -51,6 +51,7 @@ struct CandidateSource {
   ptrdiff_t x_step = 0;
   ptrdiff_t y_step = 0;
   std::vector<BilinearTap> taps;  // one per candidate; empty for direct sources
+  int step_x = 0, step_y = 0;     // direct sources: the whole-pixel step per disparity
 
   bool tabulated() const { return !taps.empty(); }
 };
@@ -66,6 +67,11 @@ struct PreparedFrame {
   int padded_disparities = 0;  // D rounded up to whole byte vectors
   bool best_half = false;
   bool subpixel = false;
+  bool second_best = false;  // find the runner-up score (SadMatch::second_score)
+  bool sum_scores = true;    // add up all candidates' scores (SadMatch::score_sum)
+  // Binocular horizontal rig with the left-right check: +1 if candidate d of pixel x is pixel
+  // x - d of the secondary image, -1 if x + d; 0 = no reverse match (SadMatch::reverse_disparity).
+  int reverse_sign = 0;
 };
 
 // A rectangle of reference pixels whose candidates, at every disparity, are inside the images of
@@ -121,6 +127,8 @@ void prepareCandidateSource(const cv::Mat1b& image, const SecondaryCamera& camer
   const bool direct = wholePixelStep(camera.bx, min_d, max_d, sx) && wholePixelStep(camera.by, min_d, max_d, sy) &&
                       (sx != 0 || sy != 0);
   source.taps.clear();
+  source.step_x = direct ? sx : 0;
+  source.step_y = direct ? sy : 0;
   if (direct) {
     // Candidate d of pixel (x, y) is (x - sx*d, y - sy*d). Flipping the axes with a positive
     // step makes it (x' + |sx| d, y' + |sy| d) in the flipped image, x' = width-1-x or x.
@@ -317,6 +325,7 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
 
   thread_local std::vector<Acc> ring_buffer, column_sum_buffer, score_buffer, combined_buffer;
   thread_local std::vector<uchar> table_buffer;
+  thread_local std::vector<Acc> reverse_score_buffer, reverse_index_buffer;
   Acc* const ring = scratch(ring_buffer, groups * window * row_size);
   std::fill(ring, ring + groups * window * row_size, Acc{0});  // nothing leaves before the first rows
   // Column xe of group g is at column_sums + g * column_stride + (xe + 1) * padded; column -1 stays
@@ -332,6 +341,16 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
   const int whole_chunks = disparities / Lanes::kCount;  // chunks without padding lanes
   // Only the chunks of the last byte vector can hold padding lanes: there, kMaxScore.
   Vec padding[kVectorsPerBytes];
+  Acc first_lanes[Lanes::kCount];
+  for (int lane = 0; lane < Lanes::kCount; ++lane) first_lanes[lane] = static_cast<Acc>(lane);
+  const Vec lane_index = cv::v_load(first_lanes);
+  // Reverse match: entry p of a row holds the best score so far of secondary pixel
+  // x1 - 1 - min_d - p (reverse_sign +1) or x0 + min_d + p (-1), and its candidate index; candidate
+  // j of reference pixel x is entry reverse_first(x) + j, so a pixel's candidates are contiguous.
+  const int reverse_sign = frame.reverse_sign;
+  const size_t reverse_size = reverse_sign ? static_cast<size_t>(region.x1 - region.x0 + padded) : 0;
+  Acc* const reverse_scores = scratch(reverse_score_buffer, reverse_size);
+  Acc* const reverse_indices = scratch(reverse_index_buffer, reverse_size);
   for (int chunk = whole_chunks; chunk < chunks; ++chunk) {
     Acc pad[Lanes::kCount];
     for (int lane = 0; lane < Lanes::kCount; ++lane) pad[lane] = chunk * Lanes::kCount + lane < disparities ? 0 : kMaxScore;
@@ -404,7 +423,7 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
   };
 
   // Horizontal running sum of the column sums, winner-takes-all and sum of scores for row y.
-  const bool subpixel = frame.subpixel;
+  const bool subpixel = frame.subpixel, second_best = frame.second_best, sum_scores = frame.sum_scores;
   const int min_disparity = frame.min_disparity;
   const auto matchRow = [&](int y, auto combine_groups) {
     constexpr bool kCombine = decltype(combine_groups)::value;
@@ -419,7 +438,7 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
         cv::v_store(scores + g * padded + b, total);
       }
     }
-    const Acc* curve = kCombine ? combined : scores;  // the combined score of every candidate
+    const Acc* const curve = kCombine ? combined : scores;  // the combined score of every candidate
     // Locals, so that the compiler keeps them in registers across the stores below.
     Acc* const group_scores = scores;
     const Acc* const all_sums = column_sums;
@@ -428,8 +447,12 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
     float* disparity_row = out.disparity.ptr<float>(y);
     int* best_row = out.best_score.ptr<int>(y);
     int* sum_row = out.score_sum.ptr<int>(y);
+    int* second_row = second_best ? out.second_score.ptr<int>(y) : nullptr;
     Vec sorted[kMaxCameras];
+    if (reverse_sign) std::fill(reverse_scores, reverse_scores + reverse_size, kMaxScore);
     for (int x = region.x0; x < region.x1; ++x) {
+      const int reverse_first = reverse_sign > 0 ? region.x1 - 1 - x : x - region.x0;
+      Vec candidate_index = lane_index;
       // Columns entering and leaving the window, relative to each group's column sums.
       const size_t entering = static_cast<size_t>(x - x0 + 2 * r + 1) * count;
       const size_t leaving = static_cast<size_t>(x - x0) * count;
@@ -464,12 +487,23 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
           // Scores are never negative: OR with the all-ones-but-sign padding makes those lanes
           // the largest score, AND with its complement makes them zero.
           const Vec& pad = padding[chunk - unpadded_chunks];
-          score_sum += Lanes::widenSum(score & ~pad);
+          if (sum_scores) score_sum += Lanes::widenSum(score & ~pad);
           score = score | pad;
-        } else {
+        } else if (sum_scores) {
           score_sum += Lanes::widenSum(score);
         }
         best = cv::v_min(best, score);
+        if (reverse_sign) {
+          // Candidates reach a secondary pixel in order of increasing x: for sign +1 that is
+          // increasing disparity, so a strict < keeps the smallest of tied ones; for -1, <=.
+          Acc* const entry_scores = reverse_scores + reverse_first + b;
+          Acc* const entry_indices = reverse_indices + reverse_first + b;
+          const Vec previous = cv::v_load(entry_scores);
+          const Vec better = reverse_sign > 0 ? score < previous : score <= previous;
+          cv::v_store(entry_scores, cv::v_min(previous, score));
+          cv::v_store(entry_indices, cv::v_select(better, candidate_index, cv::v_load(entry_indices)));
+          candidate_index = Lanes::add(candidate_index, Lanes::all(Lanes::kCount));
+        }
       }
       // The lowest score, then the first (smallest) disparity that has it: the lanes equal to it
       // as a bit mask, 64 candidates at a time, without data-dependent branches inside a block.
@@ -484,6 +518,34 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
       disparity_row[x] = disparity;
       best_row[x] = static_cast<int>(best_score);
       sum_row[x] = cv::v_reduce_sum(score_sum);
+      if (second_best) {
+        // The lowest score with the best and its two neighbours (and the padding) masked out;
+        // only the chunks holding those neighbours need the mask.
+        const int near_first = std::max(j - 1, 0) / Lanes::kCount, near_last = (j + 1) / Lanes::kCount;
+        const Vec low = Lanes::all(j - 1), high = Lanes::all(j + 1), highest = Lanes::all(kMaxScore);
+        Vec runner_up = highest;
+        for (int chunk = 0; chunk < chunk_count; ++chunk) {
+          Vec score = cv::v_load(curve + chunk * Lanes::kCount);
+          if (chunk >= unpadded_chunks) score = score | padding[chunk - unpadded_chunks];
+          if (chunk >= near_first && chunk <= near_last) {
+            const Vec index = Lanes::add(lane_index, Lanes::all(chunk * Lanes::kCount));
+            score = cv::v_select((index >= low) & (index <= high), highest, score);
+          }
+          runner_up = cv::v_min(runner_up, score);
+        }
+        const Acc second = static_cast<Acc>(cv::v_reduce_min(runner_up));
+        second_row[x] = second == kMaxScore ? std::numeric_limits<int>::max() : static_cast<int>(second);
+      }
+    }
+    if (reverse_sign) {
+      float* reverse_row = out.reverse_disparity.ptr<float>(y);
+      const int width = out.reverse_disparity.cols;
+      for (size_t p = 0; p < reverse_size; ++p) {
+        const int pixel = reverse_sign > 0 ? region.x1 - 1 - min_disparity - static_cast<int>(p)
+                                           : region.x0 + min_disparity + static_cast<int>(p);
+        if (pixel < 0 || pixel >= width || reverse_scores[p] == kMaxScore) continue;
+        reverse_row[pixel] = static_cast<float>(min_disparity + reverse_indices[p]);
+      }
     }
   };
 
@@ -526,6 +588,8 @@ const SadMatch& SadMatcher::match(const StereoFrame& frame) {
   prepared.margin = prepared.radius + prepared.padded_disparities + 2;
   prepared.best_half = options.combination == CameraCombination::kBestHalf;
   prepared.subpixel = options.subpixel;
+  prepared.second_best = options.second_best_ratio < 1.0;
+  prepared.sum_scores = options.uniqueness_threshold < 1.0;
   const auto prefilter = [&](const cv::Mat1b& image, cv::Mat1b& filtered) {
     prefilterImage(image, options.prefilter, options.prefilter_cap, options.texture_sigma, filtered);
   };
@@ -546,6 +610,22 @@ const SadMatch& SadMatcher::match(const StereoFrame& frame) {
   match.best_score.setTo(0);
   match.score_sum.create(height, width);
   match.score_sum.setTo(0);
+  const CandidateSource& first_source = prepared.sources.front();
+  prepared.reverse_sign = options.left_right_check && prepared.sources.size() == 1 && first_source.step_y == 0
+                              ? first_source.step_x
+                              : 0;
+  if (prepared.reverse_sign) {
+    match.reverse_disparity.create(height, width);
+    match.reverse_disparity.setTo(kInvalidDisparity);
+  } else {
+    match.reverse_disparity.release();
+  }
+  if (prepared.second_best) {
+    match.second_score.create(height, width);
+    match.second_score.setTo(std::numeric_limits<int>::max());
+  } else {
+    match.second_score.release();
+  }
 
   const std::vector<MatchRegion> regions = matchRegions(frame, options.min_disparity, options.max_disparity);
   const long long largest_score = static_cast<long long>(options.window) * options.window *

@@ -12,12 +12,21 @@ namespace stereonav {
 // Winner-takes-all output of the multi-baseline SAD engine, before validation. For every
 // reference pixel: the disparity whose combined window score is lowest (the smallest such
 // disparity on ties), that score, and the sum of the scores of all candidates (the paper's
-// "quality of match" test divides the first by the last). Pixels that no secondary camera sees
-// at every candidate disparity (image borders) are kInvalidDisparity with zero scores.
+// "quality of match" test divides the first by the last; zero when
+// options.uniqueness_threshold is 1, the test off). With options.second_best_ratio < 1,
+// also the lowest score of the candidates more than one disparity away from the best (INT_MAX if
+// there is none); otherwise second_score is empty. Pixels that no secondary camera sees at every
+// candidate disparity (image borders) are kInvalidDisparity with zero scores.
+// With options.left_right_check on a binocular rig whose camera sits at (1, 0) or (-1, 0),
+// reverse_disparity is the winner-takes-all disparity of every pixel of the secondary image, taken
+// from the same window scores (as cv::StereoBM's disp12MaxDiff check: no second match; a pixel
+// near the border takes the best of the candidates the reference sees); otherwise it is empty.
 struct SadMatch {
   cv::Mat1f disparity;
   cv::Mat1i best_score;
   cv::Mat1i score_sum;
+  cv::Mat1i second_score;
+  cv::Mat1f reverse_disparity;
 };
 
 // Multi-baseline SAD stereo (paper section 2.2, after Okutomi and Kanade): every view is

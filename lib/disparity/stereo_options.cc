@@ -62,6 +62,7 @@ StereoOptions loadStereoOptions(IniSection& section) {
   options.texture_threshold = section.getDouble("texture_threshold", options.texture_threshold);
   options.texture_sigma = section.getDouble("texture_sigma", options.texture_sigma);
   options.uniqueness_threshold = section.getDouble("uniqueness_threshold", options.uniqueness_threshold);
+  options.second_best_ratio = section.getDouble("second_best_ratio", options.second_best_ratio);
   options.left_right_check = section.getBool("left_right_check", options.left_right_check);
   options.left_right_max_diff = section.getDouble("left_right_max_diff", options.left_right_max_diff);
   options.subpixel = section.getBool("subpixel", options.subpixel);
@@ -86,6 +87,9 @@ void validateStereoOptions(const StereoOptions& options, const std::string& sect
   if (options.texture_threshold < 0) fail("texture_threshold", "must be >= 0");
   if (options.texture_sigma <= 0) fail("texture_sigma", "must be positive");
   if (options.uniqueness_threshold <= 0) fail("uniqueness_threshold", "must be positive");
+  if (!(options.second_best_ratio > 0 && options.second_best_ratio <= 1)) {
+    fail("second_best_ratio", "must be in (0, 1]");
+  }
   if (options.left_right_max_diff < 0) fail("left_right_max_diff", "must be >= 0");
   if (options.threads < 1) fail("threads", "must be >= 1");
   if (options.opencv_texture_threshold < 0) fail("opencv_texture_threshold", "must be >= 0");

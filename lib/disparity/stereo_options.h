@@ -40,8 +40,12 @@ struct StereoOptions {
   double texture_sigma = 1.0;  // Gaussian sigma of the LoG, pixels
   // Uniqueness: best window score / sum of the scores of all candidates must be below this. A
   // flat score curve has ratio 1/(number of candidates), so the useful range scales with the
-  // disparity range: 0.02 suits the default 32 candidates, 0.04 suits 16; 1 keeps every pixel.
+  // disparity range: 0.02 suits the default 32 candidates, 0.04 suits 16; 1 = off.
   double uniqueness_threshold = 0.02;
+  // Distinctiveness, a uniqueness test whose meaning does not depend on the number of candidates
+  // (as cv::StereoBM's uniquenessRatio): best score / lowest score of the candidates more than one
+  // disparity away from the best must be below this. 0.9 = the runner-up scores 11% worse; 1 = off.
+  double second_best_ratio = 1.0;
   // Left-right consistency: match again with the first secondary camera as reference and keep a
   // pixel only if the disparity found there differs by at most left_right_max_diff.
   bool left_right_check = true;

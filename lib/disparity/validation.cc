@@ -27,18 +27,31 @@ void rejectLowTexture(cv::Mat1f& disparity, const cv::Mat1f& texture, double thr
   }
 }
 
-void rejectAmbiguousMatches(cv::Mat1f& disparity, const SadMatch& match, double threshold) {
-  CV_Assert(disparity.size() == match.best_score.size() && disparity.size() == match.score_sum.size());
-  const float ratio = static_cast<float>(threshold);
+namespace {
+
+// Keeps the pixels whose best score is below `ratio` times `reference`'s score.
+void keepBestBelow(cv::Mat1f& disparity, const cv::Mat1i& best_score, const cv::Mat1i& reference, double ratio) {
+  CV_Assert(disparity.size() == best_score.size() && disparity.size() == reference.size());
+  const float factor = static_cast<float>(ratio);
   for (int y = 0; y < disparity.rows; ++y) {
     float* row = disparity.ptr<float>(y);
-    const int* best = match.best_score.ptr<int>(y);
-    const int* sum = match.score_sum.ptr<int>(y);
+    const int* best = best_score.ptr<int>(y);
+    const int* other = reference.ptr<int>(y);
     for (int x = 0; x < disparity.cols; ++x) {
       // Branch-free, so the compiler vectorises it.
-      row[x] = static_cast<float>(best[x]) < ratio * static_cast<float>(sum[x]) ? row[x] : kInvalidDisparity;
+      row[x] = static_cast<float>(best[x]) < factor * static_cast<float>(other[x]) ? row[x] : kInvalidDisparity;
     }
   }
+}
+
+}  // namespace
+
+void rejectAmbiguousMatches(cv::Mat1f& disparity, const SadMatch& match, double threshold) {
+  keepBestBelow(disparity, match.best_score, match.score_sum, threshold);
+}
+
+void rejectIndistinctMatches(cv::Mat1f& disparity, const SadMatch& match, double ratio) {
+  keepBestBelow(disparity, match.best_score, match.second_score, ratio);
 }
 
 void rejectInconsistentMatches(cv::Mat1f& disparity, const cv::Mat1f& swapped, const SecondaryCamera& first,

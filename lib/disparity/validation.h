@@ -22,6 +22,11 @@ void rejectLowTexture(cv::Mat1f& disparity, const cv::Mat1f& texture, double thr
 // scores is not below `threshold` (a flat score curve, typical of occlusions and repetition).
 void rejectAmbiguousMatches(cv::Mat1f& disparity, const SadMatch& match, double threshold);
 
+// Distinctiveness test: rejects pixels whose best score divided by the runner-up's
+// (SadMatch::second_score, candidates more than one disparity from the best) is not below `ratio`.
+// Unlike the quality-of-match ratio, its meaning does not depend on the number of candidates.
+void rejectIndistinctMatches(cv::Mat1f& disparity, const SadMatch& match, double ratio);
+
 // Left-right consistency: `swapped` is the disparity image matched with `first` camera as the
 // reference (swapReferenceWithFirstSecondary). A pixel at disparity d is kept only if the pixel
 // it matches in that camera, at (x - bx*d, y - by*d) rounded, found a disparity within

@@ -1,11 +1,22 @@
-// Our multi-baseline SAD engine against cv::StereoBM in the same run, on the same 320x240 images,
-// 32 disparities, 7x7 window, one thread (paper section 2.2: the Triclops head delivers 320x240).
-// Compare medians: bench_disparity --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+// Our stereo engine beside cv::StereoBM and cv::StereoSGBM in the same run, on the same images,
+// at three sizes: 320x240 with 32 disparities (the paper's Triclops, section 2.2), 640x480 with 64
+// and 1280x720 with 128 (today's stereo cameras). The images are the tsukuba views resized (the
+// time does not depend on the content); one thread unless the name says Threads (all cores).
+//   - OurPaper:     binocular SAD, 7x7, texture + quality-of-match tests (the paper's path)
+//   - OurImproved:  ini/stereo_real_images.ini: 9x9, distinctiveness test, left-right check
+//                   from the same scores (the accuracy configuration of docs/stereo.md)
+//   - OurTrinocular: the paper's path with the L-shaped Triclops head (left and top cameras)
+//   - OpenCvStereoBm: its defaults at 9x9 (x-Sobel, texture 10, uniqueness 15), no speckle filter
+//   - OpenCvStereoSgbm: 3x3 blocks, MODE_SGBM
+// Compare medians; the argument is the width (320, 640 or 1280):
+//   bench_disparity --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
 #include <opencv2/calib3d.hpp>
 #include <opencv2/core/utility.hpp>
 #include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 
+#include <stdexcept>
 #include <string>
 
 #include "disparity/disparity_engine.h"
@@ -13,36 +24,50 @@
 namespace stereonav {
 namespace {
 
-const cv::Rect kCrop(32, 24, 320, 240);
+cv::Size imageSize(int width) { return width == 1280 ? cv::Size(1280, 720) : cv::Size(width, width * 3 / 4); }
+int disparities(int width) { return width / 10; }  // 32, 64, 128
 
-cv::Mat1b tsukubaView(int column) {
+cv::Mat1b tsukubaView(int column, int width) {
   const std::string path =
       std::string(STEREONAV_TEST_DATA_DIR) + "/tsukuba/scene1.row3.col" + std::to_string(column) + ".ppm";
   const cv::Mat1b image = cv::imread(path, cv::IMREAD_GRAYSCALE);
   if (image.empty()) throw std::runtime_error(path + ": cannot read image");
-  return image(kCrop).clone();
+  cv::Mat1b resized;
+  cv::resize(image, resized, imageSize(width), 0, 0, cv::INTER_LINEAR);
+  return resized;
 }
 
 // Tsukuba has no vertical views; the top camera of the L-shaped rig sees a point at (x, y + d),
-// here the reference moved down by 8 rows (the speed does not depend on the content).
+// here the reference moved down by 8 rows.
 cv::Mat1b shiftedDown(const cv::Mat1b& image, int rows) {
   cv::Mat1b shifted;
   cv::copyMakeBorder(image.rowRange(0, image.rows - rows), shifted, rows, 0, 0, 0, cv::BORDER_REPLICATE);
   return shifted;
 }
 
-StereoOptions benchmarkOptions() {
-  StereoOptions options;  // the shipped defaults: 32 disparities, 7x7, x-Sobel, texture + uniqueness
-  options.max_disparity = 31;
-  options.window = 7;
-  options.threads = 1;
-  options.left_right_check = false;  // cv::StereoBM's defaults have no left-right check either
+StereoOptions paperOptions(int width) {
+  StereoOptions options;  // 7x7, x-Sobel, texture + quality of match
+  options.max_disparity = disparities(width) - 1;
+  options.uniqueness_threshold = 0.64 / disparities(width);
+  options.left_right_check = false;  // the Triclops had none, nor has cv::StereoBM's default
+  return options;
+}
+
+StereoOptions improvedOptions(int width) {
+  StereoOptions options;  // ini/stereo_real_images.ini
+  options.max_disparity = disparities(width) - 1;
+  options.window = 9;
+  options.texture_threshold = 0;
+  options.uniqueness_threshold = 1;
+  options.second_best_ratio = 0.9;
+  options.left_right_check = true;
   return options;
 }
 
 // Like cv::StereoBM below, one matcher object is reused for every frame.
-void runOurs(benchmark::State& state, const StereoFrame& frame, const StereoOptions& options) {
-  cv::setNumThreads(1);
+void runOurs(benchmark::State& state, const StereoFrame& frame, StereoOptions options, int threads) {
+  cv::setNumThreads(threads);
+  options.threads = threads;
   StereoMatcher matcher(options);
   cv::Mat1f disparity;
   for (auto _ : state) {
@@ -51,26 +76,34 @@ void runOurs(benchmark::State& state, const StereoFrame& frame, const StereoOpti
   }
 }
 
-void BM_OurSadBinocular(benchmark::State& state) {
-  runOurs(state, {tsukubaView(3), {{tsukubaView(4), {1, 0}}}}, benchmarkOptions());
+StereoFrame binocular(int width) { return {tsukubaView(3, width), {{tsukubaView(4, width), {1, 0}}}}; }
+
+void BM_OurPaper(benchmark::State& state) {
+  const int width = static_cast<int>(state.range(0));
+  runOurs(state, binocular(width), paperOptions(width), 1);
 }
 
-void BM_OurSadBinocularWithLeftRightCheck(benchmark::State& state) {
-  StereoOptions options = benchmarkOptions();
-  options.left_right_check = true;
-  runOurs(state, {tsukubaView(3), {{tsukubaView(4), {1, 0}}}}, options);
+void BM_OurImproved(benchmark::State& state) {
+  const int width = static_cast<int>(state.range(0));
+  runOurs(state, binocular(width), improvedOptions(width), 1);
 }
 
-void BM_OurSadTriclopsL(benchmark::State& state) {
-  const cv::Mat1b reference = tsukubaView(3);
-  runOurs(state, {reference, {{tsukubaView(2), {-1, 0}}, {shiftedDown(reference, 8), {0, -1}}}}, benchmarkOptions());
+void BM_OurImprovedThreads(benchmark::State& state) {
+  const int width = static_cast<int>(state.range(0));
+  runOurs(state, binocular(width), improvedOptions(width), cv::getNumberOfCPUs());
 }
 
-void BM_OpenCvStereoBm(benchmark::State& state) {
-  cv::setNumThreads(1);
-  const cv::Mat1b left = tsukubaView(3), right = tsukubaView(4);
-  // Its defaults: x-Sobel prefilter (cap 31), texture threshold 10, uniqueness ratio 15.
-  const cv::Ptr<cv::StereoBM> matcher = cv::StereoBM::create(32, 7);
+void BM_OurTrinocular(benchmark::State& state) {
+  const int width = static_cast<int>(state.range(0));
+  const cv::Mat1b reference = tsukubaView(3, width);
+  runOurs(state, {reference, {{tsukubaView(2, width), {-1, 0}}, {shiftedDown(reference, 8), {0, -1}}}},
+          paperOptions(width), 1);
+}
+
+void runOpenCv(benchmark::State& state, const cv::Ptr<cv::StereoMatcher>& matcher, int threads) {
+  cv::setNumThreads(threads);
+  const int width = static_cast<int>(state.range(0));
+  const cv::Mat1b left = tsukubaView(3, width), right = tsukubaView(4, width);
   cv::Mat disparity;
   for (auto _ : state) {
     matcher->compute(left, right, disparity);
@@ -78,10 +111,26 @@ void BM_OpenCvStereoBm(benchmark::State& state) {
   }
 }
 
-BENCHMARK(BM_OpenCvStereoBm)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_OurSadBinocular)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_OurSadTriclopsL)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_OurSadBinocularWithLeftRightCheck)->Unit(benchmark::kMillisecond);
+void BM_OpenCvStereoBm(benchmark::State& state) {
+  runOpenCv(state, cv::StereoBM::create(disparities(static_cast<int>(state.range(0))), 9), 1);
+}
+
+void BM_OpenCvStereoBmThreads(benchmark::State& state) {
+  runOpenCv(state, cv::StereoBM::create(disparities(static_cast<int>(state.range(0))), 9), cv::getNumberOfCPUs());
+}
+
+void BM_OpenCvStereoSgbm(benchmark::State& state) {
+  runOpenCv(state, cv::StereoSGBM::create(0, disparities(static_cast<int>(state.range(0))), 3, 72, 288), 1);
+}
+
+#define STEREO_SIZES ->Arg(320)->Arg(640)->Arg(1280)->Unit(benchmark::kMillisecond)
+BENCHMARK(BM_OpenCvStereoBm) STEREO_SIZES;
+BENCHMARK(BM_OurPaper) STEREO_SIZES;
+BENCHMARK(BM_OurImproved) STEREO_SIZES;
+BENCHMARK(BM_OurTrinocular) STEREO_SIZES;
+BENCHMARK(BM_OpenCvStereoSgbm) STEREO_SIZES;
+BENCHMARK(BM_OpenCvStereoBmThreads) STEREO_SIZES->UseRealTime();
+BENCHMARK(BM_OurImprovedThreads) STEREO_SIZES->UseRealTime();
 
 }  // namespace
 }  // namespace stereonav

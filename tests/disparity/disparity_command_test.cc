@@ -103,6 +103,84 @@ TEST_F(DisparityCommandTest, OpenCvBackendChosenOnTheCommandLine) {
   EXPECT_NE(result.output.find("backend bm"), std::string::npos) << result.output;
 }
 
+TEST_F(DisparityCommandTest, SpikeRemovalAppliesTheIniSection) {
+  const auto countValid = [](const cv::Mat1f& disparity) {
+    return std::count_if(disparity.begin(), disparity.end(), [](float d) { return isValidDisparity(d); });
+  };
+  ASSERT_EQ(runBinocular("--out " + path("plain.pfm")).exit_code, 0);
+  const cv::Mat1f plain = readDisparityPfm(path("plain.pfm"));
+  // Surfaces smaller than the whole image: nothing survives.
+  std::ofstream(path("stereo.ini"), std::ios::app) << "[spike_removal]\nfilter = segmentation\nmin_region_pixels = "
+                                                   << plain.total() + 1 << "\n";
+  const CommandResult all_removed = runBinocular("--out " + path("none.pfm") + " --spike-removal");
+  ASSERT_EQ(all_removed.exit_code, 0) << all_removed.output;
+  EXPECT_NE(all_removed.output.find("spike removal"), std::string::npos) << all_removed.output;
+  EXPECT_EQ(countValid(readDisparityPfm(path("none.pfm"))), 0);
+  // Small surfaces (the speckles of a window matcher) go; what stays is unchanged and most of it.
+  std::ofstream(path("stereo.ini")) << "[stereo]\nmax_disparity = 15\nuniqueness_threshold = 0.04\n"
+                                       "[spike_removal]\nfilter = segmentation\nmin_region_pixels = 50\n";
+  ASSERT_EQ(runBinocular("--out " + path("filtered.pfm") + " --spike-removal").exit_code, 0);
+  const cv::Mat1f filtered = readDisparityPfm(path("filtered.pfm"));
+  int changed = 0;
+  for (size_t i = 0; i < plain.total(); ++i) {
+    const float before = plain(static_cast<int>(i)), after = filtered(static_cast<int>(i));
+    changed += isValidDisparity(after) && after != before;
+  }
+  EXPECT_EQ(changed, 0);
+  EXPECT_LT(countValid(filtered), countValid(plain));
+  EXPECT_GT(countValid(filtered), 0.8 * countValid(plain));
+  // Without the flag the ini's section is not applied.
+  ASSERT_EQ(runBinocular("--out " + path("again.pfm")).exit_code, 0);
+  EXPECT_EQ(countValid(readDisparityPfm(path("again.pfm"))), countValid(plain));
+}
+
+TEST_F(DisparityCommandTest, GroundTruthScoresOnMasks) {
+  const cv::Mat1f truth = loadMiddleburyGroundTruth(kData + "truedisp.row3.col3.pgm", 16.0);
+  cv::Mat1b left_half(truth.size(), uchar{0});
+  left_half.colRange(0, truth.cols / 2).setTo(255);
+  left_half(100, 50) = 128;  // Middlebury's grey (occluded) is not evaluated
+  ASSERT_TRUE(cv::imwrite(path("left.png"), left_half));
+  const std::string gt = " --gt " + kData + "truedisp.row3.col3.pgm --gt-scale 16";
+  const CommandResult result =
+      runBinocular("--out " + path("out.pfm") + gt + " --gt-nonocc " + path("left.png") + " --gt-disc " + path("left.png") +
+                   " --gt-border 10");
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  int known_left = 0, known = 0;
+  for (int y = 10; y < truth.rows - 10; ++y) {
+    for (int x = 10; x < truth.cols - 10; ++x) {
+      known += isValidDisparity(truth(y, x));
+      known_left += isValidDisparity(truth(y, x)) && x < truth.cols / 2 && !(y == 100 && x == 50);
+    }
+  }
+  const std::string counted = "(" + std::to_string(known_left) + " known pixels)";
+  EXPECT_NE(result.output.find("evaluation nonocc: "), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("evaluation disc: "), std::string::npos) << result.output;
+  EXPECT_EQ(std::count(result.output.begin(), result.output.end(), '\n'), 4) << result.output;
+  size_t masked_lines = 0;
+  for (size_t at = result.output.find(counted); at != std::string::npos; at = result.output.find(counted, at + 1)) {
+    ++masked_lines;
+  }
+  EXPECT_EQ(masked_lines, 2u) << result.output;
+  EXPECT_NE(result.output.find("evaluation all: ", 0), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("(" + std::to_string(known) + " known pixels)"),
+            std::string::npos)
+      << result.output;
+
+  // Without a mask the non-occluded pixels are derived from the truth (nonOccludedMask).
+  const CommandResult derived = runBinocular("--out " + path("out.pfm") + gt);
+  ASSERT_EQ(derived.exit_code, 0) << derived.output;
+  EXPECT_NE(derived.output.find("evaluation nonocc (derived from the ground truth): "), std::string::npos)
+      << derived.output;
+}
+
+TEST_F(DisparityCommandTest, MasksNeedGroundTruthAndTheirSize) {
+  expectError(runBinocular("--out " + path("out.pfm") + " --gt-nonocc " + path("m.png")), 2, "need --gt");
+  ASSERT_TRUE(cv::imwrite(path("small.png"), cv::Mat1b(10, 10, uchar{255})));
+  expectError(runBinocular("--out " + path("out.pfm") + " --gt " + kData + "truedisp.row3.col3.pgm --gt-scale 16 --gt-disc " +
+                           path("small.png")),
+              1, "small.png: mask is 10x10");
+}
+
 TEST_F(DisparityCommandTest, MissingImageIsNamed) {
   expectError(run("--config " + path("stereo.ini") + " --ref " + path("nope.png") + " --cam " + kData +
                   "scene1.row3.col4.ppm:1:0 --out " + path("out.pfm")),

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <vector>
 
 #include "synthetic_scene.h"
@@ -116,12 +118,14 @@ struct BruteForce {
   int best_score;
   int score_sum;
   int best_disparity;
+  int second_score;  // lowest score more than one disparity from the best
 };
 
 BruteForce bruteForce(const std::vector<cv::Mat1b>& images, const std::vector<SecondaryCamera>& cameras,
                       const StereoOptions& options, int x, int y, bool best_half) {
   const int r = options.window / 2;
-  BruteForce result{1 << 30, 0, -1};
+  BruteForce result{1 << 30, 0, -1, std::numeric_limits<int>::max()};
+  std::vector<int> scores;
   for (int d = options.min_disparity; d <= options.max_disparity; ++d) {
     std::vector<int> per_camera;
     for (size_t c = 0; c < cameras.size(); ++c) {
@@ -140,9 +144,15 @@ BruteForce bruteForce(const std::vector<cv::Mat1b>& images, const std::vector<Se
     int score = 0;
     for (size_t k = 0; k < kept; ++k) score += per_camera[k];
     result.score_sum += score;
+    scores.push_back(score);
     if (score < result.best_score) {
       result.best_score = score;
       result.best_disparity = d;
+    }
+  }
+  for (size_t j = 0; j < scores.size(); ++j) {
+    if (std::abs(options.min_disparity + static_cast<int>(j) - result.best_disparity) > 1) {
+      result.second_score = std::min(result.second_score, scores[j]);
     }
   }
   return result;
@@ -161,6 +171,7 @@ void expectMatchesBruteForce(const std::vector<SecondaryCamera>& cameras, Stereo
     images.push_back(image);
   }
   options.prefilter = Prefilter::kNone;  // compare raw grey levels
+  options.second_best_ratio = 0.9;        // so that the runner-up is found
   const SadMatch match = SadMatcher(options).match(frame);
   const bool best_half = options.combination == CameraCombination::kBestHalf;
   // Points where every camera of the cases below sees every candidate.
@@ -169,7 +180,49 @@ void expectMatchesBruteForce(const std::vector<SecondaryCamera>& cameras, Stereo
     EXPECT_EQ(match.best_score(p), expected.best_score) << p;
     EXPECT_EQ(match.score_sum(p), expected.score_sum) << p;
     EXPECT_EQ(match.disparity(p), expected.best_disparity) << p;
+    EXPECT_EQ(match.second_score(p), expected.second_score) << p;
   }
+}
+
+TEST(SadMatcherTest, NoRunnerUpWithoutTheDistinctivenessTest) {
+  StereoFrame frame{cv::Mat1b(40, 60, uchar{7}), {{cv::Mat1b(40, 60, uchar{9}), {1, 0}}}};
+  EXPECT_TRUE(SadMatcher(matchOptions()).match(frame).second_score.empty());
+}
+
+// The reverse disparity, read from the reference's window scores, is what matching again with
+// the secondary camera as the reference finds, wherever that match sees all its candidates.
+void expectReverseMatchesSwappedMatch(const SecondaryCamera& camera) {
+  cv::RNG rng(5);
+  cv::Mat1b reference(50, 90), secondary(50, 90);
+  rng.fill(reference, cv::RNG::UNIFORM, 0, 256);
+  rng.fill(secondary, cv::RNG::UNIFORM, 0, 256);
+  const StereoFrame frame{reference, {{secondary, camera}}};
+  StereoOptions options = matchOptions();
+  options.max_disparity = 20;
+  options.left_right_check = true;
+  const SadMatch reverse = SadMatcher(options).match(frame);
+  options.left_right_check = false;
+  const SadMatch swapped = SadMatcher(options).match(swapReferenceWithFirstSecondary(frame));
+  ASSERT_FALSE(reverse.reverse_disparity.empty());
+  int compared = 0;
+  for (int y = 3; y < 47; ++y) {
+    for (int x = 3 + options.max_disparity; x < 87 - options.max_disparity; ++x) {
+      EXPECT_EQ(reverse.reverse_disparity(y, x), swapped.disparity(y, x)) << "(" << x << ", " << y << ")";
+      ++compared;
+    }
+  }
+  EXPECT_GT(compared, 1000);
+}
+
+TEST(SadMatcherTest, ReverseDisparityEqualsTheSwappedMatchRightCamera) { expectReverseMatchesSwappedMatch({1, 0}); }
+
+TEST(SadMatcherTest, ReverseDisparityEqualsTheSwappedMatchLeftCamera) { expectReverseMatchesSwappedMatch({-1, 0}); }
+
+TEST(SadMatcherTest, NoReverseDisparityForSeveralCameras) {
+  const cv::Mat1b image(40, 60, uchar{7});
+  StereoOptions options = matchOptions();
+  options.left_right_check = true;
+  EXPECT_TRUE(SadMatcher(options).match({image, {{image, {1, 0}}, {image, {0, 1}}}}).reverse_disparity.empty());
 }
 
 TEST(SadMatcherTest, ScoresEqualPlainSadOneCamera) {

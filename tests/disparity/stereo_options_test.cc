@@ -21,7 +21,7 @@ TEST(StereoOptionsTest, LoadsEveryKey) {
   const StereoOptions options = load(
       "backend = sgbm\nmin_disparity = 2\nmax_disparity = 47\nwindow = 9\nprefilter = log\nprefilter_cap = 20\n"
       "combination = best_half\ntexture_threshold = 1.5\ntexture_sigma = 2\nuniqueness_threshold = 0.03\n"
-      "left_right_check = false\nleft_right_max_diff = 2\nsubpixel = true\nthreads = 4\n"
+      "second_best_ratio = 0.85\nleft_right_check = false\nleft_right_max_diff = 2\nsubpixel = true\nthreads = 4\n"
       "opencv_texture_threshold = 5\nopencv_uniqueness_ratio = 10\nopencv_speckle_window = 100\n"
       "opencv_speckle_range = 2\n");
   EXPECT_EQ(options.backend, StereoBackend::kOpenCvSgbm);
@@ -35,6 +35,7 @@ TEST(StereoOptionsTest, LoadsEveryKey) {
   EXPECT_DOUBLE_EQ(options.texture_threshold, 1.5);
   EXPECT_DOUBLE_EQ(options.texture_sigma, 2.0);
   EXPECT_DOUBLE_EQ(options.uniqueness_threshold, 0.03);
+  EXPECT_DOUBLE_EQ(options.second_best_ratio, 0.85);
   EXPECT_FALSE(options.left_right_check);
   EXPECT_DOUBLE_EQ(options.left_right_max_diff, 2.0);
   EXPECT_TRUE(options.subpixel);
@@ -52,6 +53,7 @@ TEST(StereoOptionsTest, EmptySectionGivesTheDefaults) {
   EXPECT_EQ(options.window, 7);
   EXPECT_EQ(options.backend, StereoBackend::kSad);
   EXPECT_FALSE(options.subpixel);  // paper section 3.2
+  EXPECT_DOUBLE_EQ(options.second_best_ratio, 1.0);  // the paper's quality-of-match test only
 }
 
 TEST(StereoOptionsTest, UnknownKeyIsNamedWithTheNearestKnownOne) {
@@ -67,6 +69,8 @@ TEST(StereoOptionsTest, BadValuesNameTheKey) {
   EXPECT_NE(errorOf("backend = census\n").find("[stereo] backend: expected bm | sad | sgbm"), std::string::npos);
   EXPECT_NE(errorOf("prefilter = median\n").find("[stereo] prefilter"), std::string::npos);
   EXPECT_NE(errorOf("threads = 0\n").find("[stereo] threads"), std::string::npos);
+  EXPECT_NE(errorOf("second_best_ratio = 0\n").find("[stereo] second_best_ratio"), std::string::npos);
+  EXPECT_NE(errorOf("second_best_ratio = 1.5\n").find("[stereo] second_best_ratio"), std::string::npos);
   EXPECT_NE(errorOf("texture_threshold = -1\n").find("[stereo] texture_threshold"), std::string::npos);
   EXPECT_NE(errorOf("prefilter_cap = 200\n").find("[stereo] prefilter_cap"), std::string::npos);
 }

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include "disparity/disparity_engine.h"
 #include "synthetic_scene.h"
 
@@ -104,7 +106,10 @@ TEST(LeftRightCheckTest, RejectsOccludedPixelsAndKeepsVisibleOnes) {
 }
 
 TEST(UniquenessTest, ComparesBestScoreWithSumOfScores) {
-  SadMatch match{cv::Mat1f(1, 3, 5.0f), cv::Mat1i(1, 3), cv::Mat1i(1, 3)};
+  SadMatch match;
+  match.disparity = cv::Mat1f(1, 3, 5.0f);
+  match.best_score.create(1, 3);
+  match.score_sum.create(1, 3);
   match.best_score << 10, 10, 0;
   match.score_sum << 100, 40, 0;  // ratios 0.1, 0.25, undefined
   cv::Mat1f disparity = match.disparity.clone();
@@ -112,6 +117,21 @@ TEST(UniquenessTest, ComparesBestScoreWithSumOfScores) {
   EXPECT_EQ(disparity(0, 0), 5.0f);
   EXPECT_EQ(disparity(0, 1), kInvalidDisparity);
   EXPECT_EQ(disparity(0, 2), kInvalidDisparity);  // all scores zero: nothing to tell candidates apart
+}
+
+TEST(DistinctivenessTest, ComparesBestScoreWithTheRunnerUp) {
+  SadMatch match;
+  match.disparity = cv::Mat1f(1, 4, 5.0f);
+  match.best_score.create(1, 4);
+  match.second_score.create(1, 4);
+  match.best_score << 80, 95, 0, 10;
+  match.second_score << 100, 100, 0, std::numeric_limits<int>::max();  // ratios 0.8, 0.95, undefined, ~0
+  cv::Mat1f disparity = match.disparity.clone();
+  rejectIndistinctMatches(disparity, match, 0.9);
+  EXPECT_EQ(disparity(0, 0), 5.0f);
+  EXPECT_EQ(disparity(0, 1), kInvalidDisparity);
+  EXPECT_EQ(disparity(0, 2), kInvalidDisparity);
+  EXPECT_EQ(disparity(0, 3), 5.0f);  // no candidate beyond the neighbours: nothing competes
 }
 
 TEST(LeftRightCheckTest, LooksUpTheMatchedPixelInTheSwappedImage) {

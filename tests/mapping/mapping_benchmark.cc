@@ -7,12 +7,16 @@
 //   - WithLeftRightCheck: the same plus the left-right check, which matches every frame twice
 //   - Subpixel:   ini/sample_trinocular.ini as shipped (left-right check and sub-pixel)
 //   - MrptBayes:  the paper's settings into MRPT's COccupancyGridMap2D through the virtual scan
+//   - PaperScaled/k: the paper's settings on the same frames resized k times (640x480 with 64
+//                 disparities, 1280x960 with 128; the rig's focal length and principal point, the
+//                 disparity range and the spike-removal surface size scale with them)
 // Counters: frames_per_s per CPU second (like the reported CPU time, it excludes time the
 // benchmark waited for a shared core), and the wall-clock ms per frame of each stage from
 // StereoMapper's own stage timers (inflated when other processes compete for the cores).
 //   bench_mapping --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
 #include <opencv2/core/utility.hpp>
+#include <opencv2/imgproc.hpp>
 
 #include <string>
 #include <vector>
@@ -45,9 +49,25 @@ const std::vector<RigFrame>& sampleFrames() {
   return frames;
 }
 
-void runPipeline(benchmark::State& state, const MappingOptions& options) {
+// The sample frames with every image resized `scale` times and the rig to match.
+std::vector<RigFrame> scaledFrames(int scale) {
+  std::vector<RigFrame> frames = sampleFrames();
+  for (RigFrame& frame : frames) {
+    cv::resize(frame.reference, frame.reference, cv::Size(), scale, scale, cv::INTER_LINEAR);
+    for (cv::Mat& image : frame.secondaries) cv::resize(image, image, cv::Size(), scale, scale, cv::INTER_LINEAR);
+    PinholeCamera& camera = frame.rig.reference;
+    camera.width *= scale;
+    camera.height *= scale;
+    camera.focal_px *= scale;
+    camera.cx = (camera.cx + 0.5) * scale - 0.5;
+    camera.cy = (camera.cy + 0.5) * scale - 0.5;
+  }
+  return frames;
+}
+
+void runPipeline(benchmark::State& state, const MappingOptions& options,
+                 const std::vector<RigFrame>& frames = sampleFrames()) {
   cv::setNumThreads(1);
-  const std::vector<RigFrame>& frames = sampleFrames();
   StereoMapper mapper(options, frames.front().rig);
   size_t i = 0;
   for (auto _ : state) {
@@ -86,7 +106,18 @@ void BM_PipelineMrptBayes(benchmark::State& state) {
   runPipeline(state, options);
 }
 
+void BM_PipelinePaperScaled(benchmark::State& state) {
+  const int scale = static_cast<int>(state.range(0));
+  MappingOptions options = paperOptions();
+  options.rig.reset();  // the frames carry the scaled rig
+  options.stereo.max_disparity = 32 * scale - 1;
+  options.stereo.uniqueness_threshold /= scale;  // best / sum: a flat curve is 1 / candidates
+  options.spike_removal.segmentation.min_region_pixels *= scale * scale;
+  runPipeline(state, options, scaledFrames(scale));
+}
+
 BENCHMARK(BM_PipelinePaper)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_PipelinePaperScaled)->Arg(2)->Arg(4)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_PipelineWithLeftRightCheck)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_PipelineSubpixel)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_PipelineMrptBayes)->Unit(benchmark::kMillisecond);
