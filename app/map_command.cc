@@ -1,3 +1,4 @@
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cstdio>
@@ -33,6 +34,26 @@ constexpr const char* kUsage =
 
 constexpr int kPartialMapStatus = 3;
 
+// Checked before any work, so that a typo in a path does not cost the run.
+void checkWritableFolder(const std::string& folder, const std::string& option) {
+  const std::string where = folder.empty() ? "." : folder;
+  struct stat status {};
+  if (::stat(where.c_str(), &status) != 0 || !S_ISDIR(status.st_mode)) {
+    throw UsageError(option + ": no such folder '" + where + "'");
+  }
+  if (::access(where.c_str(), W_OK) != 0) throw UsageError(option + ": folder '" + where + "' is not writable");
+}
+
+std::string folderOf(const std::string& path) {
+  const size_t slash = path.find_last_of('/');
+  return slash == std::string::npos ? "" : (slash == 0 ? "/" : path.substr(0, slash));
+}
+
+// A prefix or file name, not a folder: "--out maps/" would write hidden files "maps/.gridmap".
+void checkFileName(const std::string& path, const std::string& option) {
+  if (path.empty() || path.back() == '/') throw UsageError(option + ": expected a file name, got '" + path + "'");
+}
+
 }  // namespace
 
 int runMapCommand(const std::vector<std::string>& arguments) {
@@ -49,6 +70,13 @@ int runMapCommand(const std::vector<std::string>& arguments) {
   job.virtual_scan_rawlog = command_line.value("virtual-scans").value_or("");
   const std::optional<std::string> poses_path = command_line.value("use-ground-truth-poses");
   command_line.rejectUnknown();
+  checkFileName(job.output_prefix, "--out");
+  checkWritableFolder(folderOf(job.output_prefix), "--out");
+  if (!job.debug_panel_directory.empty()) checkWritableFolder(job.debug_panel_directory, "--debug-panels");
+  if (!job.virtual_scan_rawlog.empty()) {
+    checkFileName(job.virtual_scan_rawlog, "--virtual-scans");
+    checkWritableFolder(folderOf(job.virtual_scan_rawlog), "--virtual-scans");
+  }
 
   const MappingOptions options = loadMappingOptionsFile(config_path);
   if (poses_path) job.ground_truth_poses = loadPoseList(*poses_path);

@@ -223,11 +223,7 @@ void saveDebugPanel(const cv::Mat3b& panel, const std::string& directory, size_t
   char name[32];
   std::snprintf(name, sizeof name, "panel_%06zu.png", frame_index);
   const std::string path = directory + "/" + name;
-  writeFileAtomically(path, [&](const std::string& temporary_path) {
-    if (!cv::imwrite(temporary_path, panel)) {
-      throw std::runtime_error("cannot write debug panel '" + path + "'");
-    }
-  });
+  writeImageAtomically(path, panel);
 }
 
 }  // namespace stereonav

@@ -89,6 +89,8 @@ std::string MappingReport::toJson() const {
   for (size_t i = 0; i < calibration_warnings.size(); ++i) {
     json << (i ? ", " : "") << jsonString(calibration_warnings[i]);
   }
+  json << "],\n  \"output_errors\": [";
+  for (size_t i = 0; i < output_errors.size(); ++i) json << (i ? ", " : "") << jsonString(output_errors[i]);
   json << "],\n"
        << "  \"matched_pixel_fraction\": " << jsonNumber(matched_pixel_fraction) << ",\n"
        << "  \"valid_pixel_fraction\": " << jsonNumber(kept_pixel_fraction) << ",\n"
