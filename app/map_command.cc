@@ -96,14 +96,17 @@ int runMapCommand(const std::vector<std::string>& arguments) {
   for (const std::string& warning : report.calibration_warnings) {
     std::cerr << "stereonav map: calibration: " << warning << "\n";
   }
+  if (report.frames_mapped == 0) {
+    // A failure: one line saying why (the outputs, written anyway, hold an empty map).
+    std::string why = report.damage ? report.damage->describe(job.rawlog_path) : report.skipped.summary();
+    if (why.empty()) why = "no stereo frame in it";
+    std::cerr << "stereonav map: no frame of " << job.rawlog_path << " could be mapped: " << why << "\n";
+    return 1;
+  }
   std::cerr << "stereonav map: " << report.summary() << "\n"
             << "stereonav map: wrote " << job.output_prefix
             << ".{gridmap,png,yaml,pgm,3Dscene,stats.json}"
             << (job.virtual_scan_rawlog.empty() ? "" : " and " + job.virtual_scan_rawlog) << "\n";
-  if (report.frames_mapped == 0) {
-    std::cerr << "stereonav map: no frame of " << job.rawlog_path << " could be mapped\n";
-    return 1;
-  }
   return report.complete() ? 0 : kPartialMapStatus;
 }
 

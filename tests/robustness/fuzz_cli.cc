@@ -130,6 +130,10 @@ void check(const CommandRun& run, const std::string& file, const std::string& wh
     ++tally.unclear;
     problem = "partial map without naming the file";
   }
+  if (tally.runs % 50 == 0) {
+    std::cout << "  " << tally.runs << " runs: " << tally.crashes << " crashes, " << tally.hangs << " hangs, "
+              << tally.unclear << " unclear" << std::endl;
+  }
   if (!problem.empty()) {
     std::cout << "FAIL " << what << ": " << problem << "; input kept as " << file << "\n" << run.err << "\n";
   } else {

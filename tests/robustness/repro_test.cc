@@ -216,10 +216,11 @@ TEST_F(ReproTest, B8DamageIsOneLineOnScreenAndInStats) {
 }
 
 TEST_F(ReproTest, B9DamagedCameraRecordIsReportedInBoundedTimeAndMemory) {
-  // The damaged camera record is in the first frame: nothing to map (exit 1), every output
-  // written, the damage named.
+  // The damaged camera record is in the first frame: nothing to map (exit 1, one line naming the
+  // damage), every output written.
   const CommandRun run = map(kRoot + "ini/sample_trinocular.ini", kRepro + "rawlog_hang.rawlog");
   EXPECT_EQ(run.exit_code, 1) << run.err;
+  EXPECT_TRUE(run.oneLineError()) << run.err;
   EXPECT_NE(run.err.find("rawlog_hang.rawlog: damaged, reading stopped at object #2"), std::string::npos) << run.err;
   EXPECT_TRUE(fs::exists(path("map.gridmap")));
   expectBounded(run);
