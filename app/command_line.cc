@@ -1,5 +1,9 @@
 #include "command_line.h"
 
+#include <limits>
+
+#include "common/ini_section.h"
+
 namespace stereonav::app {
 
 CommandLine::CommandLine(std::vector<std::string> arguments, std::set<std::string> flag_names)
@@ -50,28 +54,25 @@ bool CommandLine::flag(const std::string& name) {
   return flags_.count(name) > 0;
 }
 
-std::optional<int> CommandLine::intValue(const std::string& name) {
+std::optional<int> CommandLine::intValue(const std::string& name, int min_value, int max_value) {
   const auto text = value(name);
   if (!text) return std::nullopt;
-  try {
-    size_t used = 0;
-    const int result = std::stoi(*text, &used);
-    if (used == text->size()) return result;
-  } catch (const std::exception&) {
+  long long result = 0;
+  if (parseInteger(*text, result) && result >= min_value && result <= max_value) {
+    return static_cast<int>(result);
   }
-  throw UsageError("--" + name + ": expected an integer, got '" + *text + "'");
+  throw UsageError("--" + name + ": expected an integer in " + std::to_string(min_value) + ".." +
+                   std::to_string(max_value) + ", got '" + *text + "'");
 }
 
-std::optional<double> CommandLine::doubleValue(const std::string& name) {
+std::optional<double> CommandLine::doubleValue(const std::string& name, double min_value,
+                                               double max_value) {
   const auto text = value(name);
   if (!text) return std::nullopt;
-  try {
-    size_t used = 0;
-    const double result = std::stod(*text, &used);
-    if (used == text->size()) return result;
-  } catch (const std::exception&) {
-  }
-  throw UsageError("--" + name + ": expected a number, got '" + *text + "'");
+  double result = 0.0;
+  if (parseFiniteDouble(*text, result) && result >= min_value && result <= max_value) return result;
+  throw UsageError("--" + name + ": expected " + describeRange(min_value, max_value) + ", got '" +
+                   *text + "'");
 }
 
 void CommandLine::rejectUnknown() const {

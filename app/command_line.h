@@ -1,5 +1,6 @@
 #pragma once
 
+#include <limits>
 #include <map>
 #include <optional>
 #include <set>
@@ -25,8 +26,13 @@ class CommandLine {
   std::string required(const std::string& name);
   std::vector<std::string> values(const std::string& name);
   bool flag(const std::string& name);
-  std::optional<int> intValue(const std::string& name);
-  std::optional<double> doubleValue(const std::string& name);
+  // Strict numbers (the whole value, finite) within [min_value, max_value], else UsageError
+  // naming the option and the range.
+  std::optional<int> intValue(const std::string& name, int min_value = std::numeric_limits<int>::min(),
+                              int max_value = std::numeric_limits<int>::max());
+  std::optional<double> doubleValue(const std::string& name,
+                                    double min_value = std::numeric_limits<double>::lowest(),
+                                    double max_value = std::numeric_limits<double>::max());
   void rejectUnknown() const;
 
  private:

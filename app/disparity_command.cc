@@ -1,6 +1,7 @@
 #include <mrpt/config/CConfigFile.h>
 #include <opencv2/imgcodecs.hpp>
 
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -12,6 +13,7 @@
 #include "disparity/disparity_evaluation.h"
 #include "disparity/disparity_io.h"
 #include "disparity/stereo_options.h"
+#include "rig/camera_rig.h"
 #include "spike_removal/spike_filter.h"
 
 namespace stereonav::app {
@@ -51,14 +53,13 @@ SecondaryView parseCamera(const std::string& text) {
   const size_t first = text.rfind(':', second - 1);
   if (first == std::string::npos || first == 0) throw malformed();
   SecondaryView view;
-  try {
-    size_t used_x = 0, used_y = 0;
-    const std::string bx = text.substr(first + 1, second - first - 1), by = text.substr(second + 1);
-    view.camera.bx = std::stod(bx, &used_x);
-    view.camera.by = std::stod(by, &used_y);
-    if (used_x != bx.size() || used_y != by.size()) throw malformed();
-  } catch (const std::logic_error&) {
+  if (!parseFiniteDouble(text.substr(first + 1, second - first - 1), view.camera.bx) ||
+      !parseFiniteDouble(text.substr(second + 1), view.camera.by)) {
     throw malformed();
+  }
+  if (std::abs(view.camera.bx) > kMaxRelativeBaseline || std::abs(view.camera.by) > kMaxRelativeBaseline) {
+    throw UsageError("--cam '" + text + "': BX and BY must be in " +
+                     describeRange(-kMaxRelativeBaseline, kMaxRelativeBaseline) + " (units of the unit baseline)");
   }
   if (view.camera.bx == 0.0 && view.camera.by == 0.0) {
     throw UsageError("--cam '" + text + "': baseline (0, 0) is the reference camera itself");
@@ -101,15 +102,15 @@ int runDisparityCommand(const std::vector<std::string>& arguments) {
   const std::string reference_path = command_line.required("ref");
   const std::vector<std::string> cameras = command_line.values("cam");
   const std::string out_path = command_line.required("out");
-  const auto max_disparity = command_line.intValue("max-disp");
-  const auto window = command_line.intValue("window");
+  const auto max_disparity = command_line.intValue("max-disp", 1, kMaxDisparity);
+  const auto window = command_line.intValue("window", 3, kMaxWindow);
   const bool subpixel = command_line.flag("subpixel");
   const auto backend = command_line.value("backend");
   const auto ground_truth_path = command_line.value("gt");
-  const auto ground_truth_scale = command_line.doubleValue("gt-scale");
+  const auto ground_truth_scale = command_line.doubleValue("gt-scale", 1e-6, 1e6);
   const auto nonoccluded_path = command_line.value("gt-nonocc");
   const auto discontinuity_path = command_line.value("gt-disc");
-  const auto border = command_line.intValue("gt-border");
+  const auto border = command_line.intValue("gt-border", 0, 10000);
   const bool spike_removal = command_line.flag("spike-removal");
   const auto colour_path = command_line.value("colour");
   command_line.rejectUnknown();
@@ -124,17 +125,10 @@ int runDisparityCommand(const std::vector<std::string>& arguments) {
   if (ground_truth_path.has_value() != ground_truth_scale.has_value()) {
     throw UsageError("--gt and --gt-scale go together");
   }
-  if (ground_truth_scale && *ground_truth_scale <= 0) throw UsageError("--gt-scale must be positive");
   if (!ground_truth_path && (nonoccluded_path || discontinuity_path || border)) {
     throw UsageError("--gt-nonocc, --gt-disc and --gt-border need --gt");
   }
-  if (border && *border < 0) throw UsageError("--gt-border " + std::to_string(*border) + ": must be >= 0");
-  if (window && (*window < 3 || *window % 2 == 0)) {
-    throw UsageError("--window " + std::to_string(*window) + ": must be odd and >= 3");
-  }
-  if (max_disparity && *max_disparity <= 0) {
-    throw UsageError("--max-disp " + std::to_string(*max_disparity) + ": must be positive");
-  }
+  if (window && *window % 2 == 0) throw UsageError("--window " + std::to_string(*window) + ": must be odd");
 
   if (!std::ifstream(config_path)) throw std::runtime_error(config_path + ": cannot read config file");
   const mrpt::config::CConfigFile config(config_path);

@@ -39,7 +39,7 @@ int runExploreCommand(const std::vector<std::string>& arguments) {
   ExplorationJob job;
   job.output_prefix = command_line.required("out");
   job.record_rawlog = command_line.value("record").value_or("");
-  job.max_time_s = command_line.doubleValue("max-time");
+  job.max_time_s = command_line.doubleValue("max-time", 1e-3, 86400.0);
   job.seed = command_line.intValue("seed");
   command_line.rejectUnknown();
   if (job.max_time_s && !(*job.max_time_s > 0.0)) throw UsageError("--max-time: must be positive");

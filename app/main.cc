@@ -1,9 +1,15 @@
+#include <opencv2/core.hpp>
+#include <opencv2/core/utils/logger.hpp>
+
+#include <algorithm>
 #include <iostream>
+#include <new>
 #include <string>
 #include <vector>
 
 #include "command_line.h"
 #include "commands.h"
+#include "common/error_text.h"
 #include "common/ini_section.h"
 
 namespace {
@@ -33,10 +39,19 @@ const Command kCommands[] = {
      stereonav::app::runImportKittiCommand},
 };
 
+// Full details (MRPT backtraces, OpenCV's own log) only with --verbose, which any command takes.
+bool takeVerboseFlag(std::vector<std::string>& arguments) {
+  const auto verbose = std::find(arguments.begin(), arguments.end(), "--verbose");
+  if (verbose == arguments.end()) return false;
+  arguments.erase(verbose);
+  return true;
+}
+
 void printUsage(std::ostream& out) {
   out << "usage: stereonav <command> [options]\n\ncommands:\n";
   for (const auto& command : kCommands) out << "  " << command.name << "\t" << command.summary << "\n";
-  out << "\nRun 'stereonav <command> --help' for a command's options.\n";
+  out << "\nRun 'stereonav <command> --help' for a command's options. Any command takes --verbose:\n"
+         "full error details (MRPT's backtraces, OpenCV's log).\n";
 }
 
 }  // namespace
@@ -47,7 +62,10 @@ int main(int argc, char** argv) {
     return argc < 2 ? 2 : 0;
   }
   const std::string name = argv[1];
-  const std::vector<std::string> arguments(argv + 2, argv + argc);
+  std::vector<std::string> arguments(argv + 2, argv + argc);
+  const bool verbose = takeVerboseFlag(arguments);
+  if (!verbose) cv::utils::logging::setLogLevel(cv::utils::logging::LOG_LEVEL_SILENT);
+  const auto message = [&](const std::string& text) { return verbose ? text : stereonav::oneLineMessage(text); };
   for (const auto& command : kCommands) {
     if (name != command.name) continue;
     try {
@@ -55,8 +73,17 @@ int main(int argc, char** argv) {
     } catch (const stereonav::app::UsageError& error) {
       std::cerr << "stereonav " << name << ": " << error.what() << "\n";
       return 2;
+    } catch (const std::bad_alloc&) {
+      // Inputs are bounded when loaded, so this means a limit was raised past the memory there is.
+      std::cerr << "stereonav " << name << ": out of memory; lower the size limits of the inputs "
+                << "(e.g. [grid] max_cells, image size, disparity range)\n";
+      return 1;
+    } catch (const cv::Exception& error) {
+      std::cerr << "stereonav " << name << ": OpenCV error in " << error.func << ": " << stereonav::oneLineMessage(error.err)
+                << (verbose ? "\n" + std::string(error.what()) : "") << "\n";
+      return 1;
     } catch (const std::exception& error) {
-      std::cerr << "stereonav " << name << ": " << error.what() << "\n";
+      std::cerr << "stereonav " << name << ": " << message(error.what()) << "\n";
       return 1;
     }
   }

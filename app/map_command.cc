@@ -1,3 +1,4 @@
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -40,6 +41,26 @@ constexpr const char* kUsage =
 
 constexpr int kPartialMapStatus = 3;
 
+// Checked before any work, so that a typo in a path does not cost the run.
+void checkWritableFolder(const std::string& folder, const std::string& option) {
+  const std::string where = folder.empty() ? "." : folder;
+  struct stat status {};
+  if (::stat(where.c_str(), &status) != 0 || !S_ISDIR(status.st_mode)) {
+    throw UsageError(option + ": no such folder '" + where + "'");
+  }
+  if (::access(where.c_str(), W_OK) != 0) throw UsageError(option + ": folder '" + where + "' is not writable");
+}
+
+std::string folderOf(const std::string& path) {
+  const size_t slash = path.find_last_of('/');
+  return slash == std::string::npos ? "" : (slash == 0 ? "/" : path.substr(0, slash));
+}
+
+// A prefix or file name, not a folder: "--out maps/" would write hidden files "maps/.gridmap".
+void checkFileName(const std::string& path, const std::string& option) {
+  if (path.empty() || path.back() == '/') throw UsageError(option + ": expected a file name, got '" + path + "'");
+}
+
 }  // namespace
 
 int runMapCommand(const std::vector<std::string>& arguments) {
@@ -66,6 +87,13 @@ int runMapCommand(const std::vector<std::string>& arguments) {
   if (job.pose_source == MapPoseSource::kGroundTruth && !truth_path) {
     throw UsageError("--poses ground_truth needs --use-ground-truth-poses GT.txt");
   }
+  checkFileName(job.output_prefix, "--out");
+  checkWritableFolder(folderOf(job.output_prefix), "--out");
+  if (!job.debug_panel_directory.empty()) checkWritableFolder(job.debug_panel_directory, "--debug-panels");
+  if (!job.virtual_scan_rawlog.empty()) {
+    checkFileName(job.virtual_scan_rawlog, "--virtual-scans");
+    checkWritableFolder(folderOf(job.virtual_scan_rawlog), "--virtual-scans");
+  }
 
   const MappingOptions options = loadMappingOptionsFile(config_path);
   if (truth_path) job.ground_truth_poses = loadPoseList(*truth_path);
@@ -85,6 +113,13 @@ int runMapCommand(const std::vector<std::string>& arguments) {
   for (const std::string& warning : report.calibration_warnings) {
     std::cerr << "stereonav map: calibration: " << warning << "\n";
   }
+  if (report.frames_mapped == 0) {
+    // A failure: one line saying why (the outputs, written anyway, hold an empty map).
+    std::string why = report.damage ? report.damage->describe(job.rawlog_path) : report.skipped.summary();
+    if (why.empty()) why = "no stereo frame in it";
+    std::cerr << "stereonav map: no frame of " << job.rawlog_path << " could be mapped: " << why << "\n";
+    return 1;
+  }
   std::cerr << "stereonav map: " << report.summary() << "\n"
             << "stereonav map: wrote " << job.output_prefix
             << ".{gridmap,png,yaml,pgm,3Dscene,traj.tum,stats.json}"
@@ -94,10 +129,6 @@ int runMapCommand(const std::vector<std::string>& arguments) {
     truth.resize(std::min(truth.size(), report.path.size()));
     std::cerr << "stereonav map: trajectory error against " << *truth_path << ":\n"
               << trajectoryError(report.path, truth).toText();
-  }
-  if (report.frames_mapped == 0) {
-    std::cerr << "stereonav map: no frame of " << job.rawlog_path << " could be mapped\n";
-    return 1;
   }
   return report.complete() ? 0 : kPartialMapStatus;
 }

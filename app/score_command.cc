@@ -4,6 +4,7 @@
 
 #include "command_line.h"
 #include "commands.h"
+#include "common/ini_section.h"
 #include "evaluation/map_score.h"
 #include "evaluation/ros_map.h"
 #include "evaluation/score_overlay.h"
@@ -56,10 +57,10 @@ int runTrajectoryScore(CommandLine& command_line) {
 }
 
 std::pair<double, double> parsePoint(const std::string& text) {
-  std::istringstream in(text);
   double x = 0, y = 0;
-  char comma = 0;
-  if (!(in >> x >> comma >> y) || comma != ',' || !in.eof()) {
+  const size_t comma = text.find(',');
+  if (comma == std::string::npos || !parseFiniteDouble(text.substr(0, comma), x) ||
+      !parseFiniteDouble(text.substr(comma + 1), y)) {
     throw UsageError("--start: expected X,Y in metres, got '" + text + "'");
   }
   return {x, y};
@@ -79,15 +80,14 @@ int runScoreCommand(const std::vector<std::string>& arguments) {
   const std::optional<std::string> poses_path = command_line.value("poses");
   const std::optional<std::string> start = command_line.value("start");
   MapScoreOptions options;
-  options.tolerance_cells = command_line.intValue("tolerance").value_or(options.tolerance_cells);
-  options.view_fov_deg = command_line.doubleValue("fov-deg").value_or(options.view_fov_deg);
-  options.view_range_m = command_line.doubleValue("view-range").value_or(options.view_range_m);
+  // Bounds keep the work in proportion to the maps: the tolerance window and the rays cast
+  // from every pose grow with them.
+  options.tolerance_cells = command_line.intValue("tolerance", 0, 100).value_or(options.tolerance_cells);
+  options.view_fov_deg = command_line.doubleValue("fov-deg", 1e-3, 360.0).value_or(options.view_fov_deg);
+  options.view_range_m = command_line.doubleValue("view-range", 1e-3, 100.0).value_or(options.view_range_m);
   const bool json = command_line.flag("json");
   const std::optional<std::string> overlay_path = command_line.value("overlay");
   command_line.rejectUnknown();
-  if (options.tolerance_cells < 0) throw UsageError("--tolerance: must be >= 0 cells");
-  if (!(options.view_fov_deg > 0 && options.view_fov_deg <= 360)) throw UsageError("--fov-deg: must be in (0, 360]");
-  if (!(options.view_range_m > 0)) throw UsageError("--view-range: must be > 0 metres");
   if (start) options.start = parsePoint(*start);
 
   const RosMap map = loadRosMap(map_path);

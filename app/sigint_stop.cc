@@ -7,25 +7,33 @@ namespace stereonav {
 namespace {
 
 volatile std::sig_atomic_t stop_requested = 0;
-struct sigaction previous_action;
+struct sigaction previous_sigint;
+struct sigaction previous_sigterm;
 
-void onSigint(int) { stop_requested = 1; }
+void onStopSignal(int) { stop_requested = 1; }
 
 }  // namespace
 
 SigintStopRequest::SigintStopRequest() {
   stop_requested = 0;
   struct sigaction action {};
-  action.sa_handler = onSigint;
+  action.sa_handler = onStopSignal;
   sigemptyset(&action.sa_mask);
-  // The handler is reset to the default after the first signal: a second Ctrl-C kills.
+  // The handler is reset to the default after the first signal: a second one kills.
   action.sa_flags = SA_RESETHAND;
-  if (sigaction(SIGINT, &action, &previous_action) != 0) {
+  if (sigaction(SIGINT, &action, &previous_sigint) != 0) {
     throw std::runtime_error("cannot install the SIGINT handler");
+  }
+  if (sigaction(SIGTERM, &action, &previous_sigterm) != 0) {
+    sigaction(SIGINT, &previous_sigint, nullptr);
+    throw std::runtime_error("cannot install the SIGTERM handler");
   }
 }
 
-SigintStopRequest::~SigintStopRequest() { sigaction(SIGINT, &previous_action, nullptr); }
+SigintStopRequest::~SigintStopRequest() {
+  sigaction(SIGINT, &previous_sigint, nullptr);
+  sigaction(SIGTERM, &previous_sigterm, nullptr);
+}
 
 bool SigintStopRequest::requested() const { return stop_requested != 0; }
 

@@ -2,9 +2,10 @@
 
 namespace stereonav {
 
-// While an instance lives, the first Ctrl-C (SIGINT) only raises a flag, so that a long job can
-// finish its current step and save what it has; a second Ctrl-C terminates the process as usual.
-// The previous handler is restored on destruction. One instance at a time.
+// While an instance lives, the first Ctrl-C (SIGINT) or SIGTERM (what service managers and ROS
+// send to stop a node) only raises a flag, so that a long job can finish its current step and
+// save what it has; a second signal of the same kind terminates the process as usual. The
+// previous handlers are restored on destruction. One instance at a time.
 class SigintStopRequest {
  public:
   SigintStopRequest();

@@ -2,6 +2,7 @@
 
 #include <fstream>
 #include <iostream>
+#include <optional>
 
 #include "command_line.h"
 #include "commands.h"
@@ -45,11 +46,20 @@ int runSimulateCommand(const std::vector<std::string>& arguments) {
   const SimulatorConfig config = loadSimulatorConfig(mrpt::config::CConfigFile(config_path), config_path);
   const MotionPlan plan = loadMotionPlan(plan_path);
 
+  // Built before the run, so that a world too large for its map fails before the work.
+  std::optional<GroundTruthMap> ground_truth_map;
+  if (map_path) {
+    try {
+      ground_truth_map.emplace(world, config.ground_truth);
+    } catch (const ConfigError& error) {
+      throw ConfigError(config_path + ": " + error.what() + " (world " + world_path + ")");
+    }
+  }
   SimulationRecorder recorder(rawlog_path, config.rawlog, config.rig);
   Simulation simulation(world, config.rig, config.sensor, config.robot, config.simulation);
   const SimulationSummary summary = simulation.run(plan, [&](const SimulatedFrame& frame) { recorder.record(frame); });
   recorder.finish();
-  if (map_path) GroundTruthMap(world, config.ground_truth).writeRosMap(*map_path);
+  if (ground_truth_map) ground_truth_map->writeRosMap(*map_path);
 
   std::cout << "simulated " << summary.frames << " frames over " << summary.duration_s << " s, "
             << summary.distance_m << " m driven, " << summary.collisions << " collision(s); "

@@ -6,19 +6,17 @@ namespace stereonav {
 
 ProjectionOptions loadProjectionOptions(IniSection& section) {
   ProjectionOptions options;
-  options.floor_clearance_m = section.getDouble("floor_clearance_m", options.floor_clearance_m);
-  options.robot_height_m = section.getDouble("robot_height_m", options.robot_height_m);
-  options.surface_band_px = section.getNonNegative("surface_band_px", options.surface_band_px);
-  options.max_depth_m = section.getDouble("max_depth_m", options.max_depth_m);
-  options.scan_max_range_m = section.getDouble("scan_max_range_m", options.scan_max_range_m);
+  options.floor_clearance_m = section.getDouble("floor_clearance_m", options.floor_clearance_m, -100.0, 100.0);
+  options.robot_height_m = section.getDouble("robot_height_m", options.robot_height_m, -100.0, 100.0);
+  options.surface_band_px = section.getNonNegative("surface_band_px", options.surface_band_px, 1e4);
+  options.max_depth_m = section.getDouble("max_depth_m", options.max_depth_m, 0.0, 1e4);
+  options.scan_max_range_m = section.getPositive("scan_max_range_m", options.scan_max_range_m, 1e4);
   const auto fail = [&](const std::string& key, const std::string& why) {
     throw ConfigError("[" + section.name() + "] " + key + ": " + why);
   };
   if (!(options.robot_height_m > options.floor_clearance_m)) {
     fail("robot_height_m", "must be above floor_clearance_m");
   }
-  if (!(options.max_depth_m >= 0.0)) fail("max_depth_m", "must be >= 0 (0: no limit)");
-  if (!(options.scan_max_range_m > 0.0)) fail("scan_max_range_m", "must be positive");
   return options;
 }
 

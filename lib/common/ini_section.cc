@@ -3,10 +3,22 @@
 #include "common/ini_key_recorder.h"
 
 #include <algorithm>
-#include <sstream>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <vector>
 
 namespace stereonav {
+
+IniSection::IniSection(const mrpt::config::CConfigFileBase& config, std::string section)
+    : config_(config), section_(std::move(section)) {}
+
+bool IniSection::has(const std::string& key) const {
+  if (IniKeyRecorder* recorder = IniKeyRecorder::active()) recorder->record(section_, key, nullptr);
+  return config_.keyExists(section_, key);
+}
+
 namespace {
 
 // Tells the active IniKeyRecorder, if any, that `key` of `section` was read.
@@ -18,45 +30,90 @@ void recordRead(const std::string& section, const std::string& key, const char* 
   }
 }
 
-std::string numberText(double value) {
-  std::ostringstream text;
-  text << value;
-  return text.str();
+std::string trimmed(const std::string& text) {
+  const auto first = text.find_first_not_of(" \t\r\n");
+  if (first == std::string::npos) return "";
+  const auto last = text.find_last_not_of(" \t\r\n");
+  return text.substr(first, last - first + 1);
+}
+
+std::string formatNumber(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", value);
+  return text;
 }
 
 }  // namespace
 
-IniSection::IniSection(const mrpt::config::CConfigFileBase& config, std::string section)
-    : config_(config), section_(std::move(section)) {}
-
-bool IniSection::has(const std::string& key) const {
-  if (IniKeyRecorder* recorder = IniKeyRecorder::active()) recorder->record(section_, key, nullptr);
-  return config_.keyExists(section_, key);
-}
-
-double IniSection::getDouble(const std::string& key, double default_value) {
-  known_keys_.insert(key);
-  recordRead(section_, key, "number", numberText(default_value));
-  try {
-    return config_.read_double(section_, key, default_value);
-  } catch (const std::exception&) {
-    throw ConfigError("[" + section_ + "] " + key + ": expected a number, got '" +
-                      config_.read_string(section_, key, "") + "'");
+bool parseFiniteDouble(const std::string& text, double& value) {
+  const std::string number = trimmed(text);
+  if (number.empty()) return false;
+  errno = 0;
+  char* end = nullptr;
+  const double parsed = std::strtod(number.c_str(), &end);
+  if (end != number.c_str() + number.size() || !std::isfinite(parsed) || errno == ERANGE) {
+    // ERANGE also flags underflow (1e-400); an underflow to a denormal or zero is still a value
+    // the user did not mean, so it is rejected like overflow.
+    return false;
   }
+  value = parsed;
+  return true;
 }
 
-int IniSection::getInt(const std::string& key, int default_value) {
+bool parseInteger(const std::string& text, long long& value) {
+  const std::string number = trimmed(text);
+  if (number.empty()) return false;
+  errno = 0;
+  char* end = nullptr;
+  const long long parsed = std::strtoll(number.c_str(), &end, 10);
+  if (end != number.c_str() + number.size() || errno == ERANGE) return false;
+  value = parsed;
+  return true;
+}
+
+std::string describeRange(double min_value, double max_value) {
+  const bool has_min = min_value > std::numeric_limits<double>::lowest();
+  const bool has_max = max_value < std::numeric_limits<double>::max();
+  if (has_min && has_max) return "[" + formatNumber(min_value) + ", " + formatNumber(max_value) + "]";
+  if (has_min) return "at least " + formatNumber(min_value);
+  if (has_max) return "at most " + formatNumber(max_value);
+  return "a finite number";
+}
+
+double IniSection::getDouble(const std::string& key, double default_value, double min_value,
+                             double max_value) {
+  known_keys_.insert(key);
+  recordRead(section_, key, "number", formatNumber(default_value));
+  if (!config_.keyExists(section_, key)) return default_value;
+  const std::string text = config_.read_string(section_, key, "");
+  double value = 0.0;
+  if (!parseFiniteDouble(text, value) || value < min_value || value > max_value) {
+    throw ConfigError("[" + section_ + "] " + key + ": expected " + describeRange(min_value, max_value) +
+                      ", got '" + text + "'");
+  }
+  return value;
+}
+
+int IniSection::getInt(const std::string& key, int default_value, int min_value, int max_value) {
   known_keys_.insert(key);
   recordRead(section_, key, "integer", std::to_string(default_value));
+  if (!config_.keyExists(section_, key)) return default_value;
   const std::string text = config_.read_string(section_, key, "");
-  if (text.empty()) return default_value;
-  try {
-    size_t used = 0;
-    const int value = std::stoi(text, &used);
-    if (used == text.size()) return value;
-  } catch (const std::exception&) {
+  long long value = 0;
+  if (!parseInteger(text, value) || value < min_value || value > max_value) {
+    const bool has_min = min_value > std::numeric_limits<int>::min();
+    const bool has_max = max_value < std::numeric_limits<int>::max();
+    std::string allowed = "an integer";
+    if (has_min && has_max) {
+      allowed += " in " + std::to_string(min_value) + ".." + std::to_string(max_value);
+    } else if (has_min) {
+      allowed += " >= " + std::to_string(min_value);
+    } else if (has_max) {
+      allowed += " <= " + std::to_string(max_value);
+    }
+    throw ConfigError("[" + section_ + "] " + key + ": expected " + allowed + ", got '" + text + "'");
   }
-  throw ConfigError("[" + section_ + "] " + key + ": expected an integer, got '" + text + "'");
+  return static_cast<int>(value);
 }
 
 bool IniSection::getBool(const std::string& key, bool default_value) {
@@ -76,16 +133,18 @@ std::string IniSection::getString(const std::string& key, const std::string& def
   return config_.read_string(section_, key, default_value);
 }
 
-double IniSection::getPositive(const std::string& key, double default_value) {
-  const double value = getDouble(key, default_value);
-  if (!(value > 0.0)) throw ConfigError("[" + section_ + "] " + key + ": must be positive");
+double IniSection::getPositive(const std::string& key, double default_value, double max_value) {
+  const double value = getDouble(key, default_value, std::numeric_limits<double>::lowest(), max_value);
+  if (!(value > 0.0)) {
+    throw ConfigError("[" + section_ + "] " + key + ": must be positive" +
+                      (max_value < std::numeric_limits<double>::max() ? " (at most " + formatNumber(max_value) + ")" : "") +
+                      ", got '" + config_.read_string(section_, key, "") + "'");
+  }
   return value;
 }
 
-double IniSection::getNonNegative(const std::string& key, double default_value) {
-  const double value = getDouble(key, default_value);
-  if (!(value >= 0.0)) throw ConfigError("[" + section_ + "] " + key + ": must not be negative");
-  return value;
+double IniSection::getNonNegative(const std::string& key, double default_value, double max_value) {
+  return getDouble(key, default_value, 0.0, max_value);
 }
 
 void IniSection::rejectUnknownKeys() const {

@@ -2,6 +2,7 @@
 
 #include <mrpt/config/CConfigFileBase.h>
 
+#include <limits>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -24,13 +25,22 @@ class IniSection {
   const std::string& name() const { return section_; }
   bool has(const std::string& key) const;
 
-  double getDouble(const std::string& key, double default_value);
-  int getInt(const std::string& key, int default_value);
+  // Numbers are parsed strictly: the whole value must be one finite number ("1,5", "0.1abc",
+  // "0.1 0.2", "nan" and "inf" are rejected) within [min_value, max_value]; otherwise ConfigError
+  // names the section, the key, the allowed range and the value found.
+  double getDouble(const std::string& key, double default_value,
+                   double min_value = std::numeric_limits<double>::lowest(),
+                   double max_value = std::numeric_limits<double>::max());
+  int getInt(const std::string& key, int default_value, int min_value = std::numeric_limits<int>::min(),
+             int max_value = std::numeric_limits<int>::max());
   bool getBool(const std::string& key, bool default_value);
   std::string getString(const std::string& key, const std::string& default_value);
-  // As getDouble, and throws ConfigError unless the value is > 0 (>= 0 for getNonNegative).
-  double getPositive(const std::string& key, double default_value);
-  double getNonNegative(const std::string& key, double default_value);
+  // As getDouble, and throws ConfigError unless the value is > 0 (>= 0 for getNonNegative) and
+  // at most max_value.
+  double getPositive(const std::string& key, double default_value,
+                     double max_value = std::numeric_limits<double>::max());
+  double getNonNegative(const std::string& key, double default_value,
+                        double max_value = std::numeric_limits<double>::max());
 
   // Throws ConfigError naming the first key of the section that no getter asked for.
   void rejectUnknownKeys() const;
@@ -57,6 +67,15 @@ auto loadIniSection(const mrpt::config::CConfigFileBase& config, const std::stri
     throw ConfigError(file + ": " + error.what());
   }
 }
+
+// Parses the whole of `text` as one finite number; false for trailing text, NaN, infinities,
+// out-of-range values and empty text. The one strict number parser (ini values, path files,
+// command-line numbers).
+bool parseFiniteDouble(const std::string& text, double& value);
+bool parseInteger(const std::string& text, long long& value);
+
+// "[min, max]" as written in range errors; an unbounded side is left out ("at least 0").
+std::string describeRange(double min_value, double max_value);
 
 // The known key closest to `key` by edit distance ("" if there are none).
 std::string nearestKey(const std::string& key, const std::set<std::string>& known_keys);

@@ -91,9 +91,7 @@ void writeDisparityPng16(const std::string& path, const cv::Mat1f& disparity) {
       encoded(y, x) = static_cast<ushort>(std::max(1L, value));
     }
   }
-  writeFileAtomically(path, [&](const std::string& temporary) {
-    if (!cv::imwrite(temporary, encoded)) throw std::runtime_error(path + ": cannot write PNG");
-  });
+  writeImageAtomically(path, encoded);
 }
 
 cv::Mat1f readDisparityPng16(const std::string& path) {
@@ -129,9 +127,7 @@ cv::Mat3b colourDisparity(const cv::Mat1f& disparity, double max_disparity) {
 
 void writeDisparityColourPng(const std::string& path, const cv::Mat1f& disparity, double max_disparity) {
   const cv::Mat3b colour = colourDisparity(disparity, max_disparity);
-  writeFileAtomically(path, [&](const std::string& temporary) {
-    if (!cv::imwrite(temporary, colour)) throw std::runtime_error(path + ": cannot write PNG");
-  });
+  writeImageAtomically(path, colour);
 }
 
 }  // namespace stereonav

@@ -69,7 +69,9 @@ cv::Ptr<cv::StereoMatcher> createMatcher(const StereoOptions& options, int dispa
 cv::Mat1f matchOpenCv(const StereoFrame& frame, const StereoOptions& options) {
   checkStereoFrame(frame);
   if (frame.secondaries.size() != 1) {
-    throw std::invalid_argument("OpenCV stereo backends need exactly one secondary camera");
+    throw std::invalid_argument(std::string("[stereo] backend ") + toString(options.backend) +
+                                ": OpenCV's matchers take exactly one secondary camera, the rig has " +
+                                std::to_string(frame.secondaries.size()) + " (use backend = sad)");
   }
   const Orientation orientation = orientationFor(frame.secondaries.front().camera);
   // OpenCV searches a multiple of 16 disparities; candidates above max_disparity are discarded.

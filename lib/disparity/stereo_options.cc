@@ -80,18 +80,26 @@ void validateStereoOptions(const StereoOptions& options, const std::string& sect
   const auto fail = [&](const std::string& key, const std::string& why) {
     throw ConfigError("[" + section + "] " + key + ": " + why);
   };
-  if (options.min_disparity < 0) fail("min_disparity", "must be >= 0");
-  if (options.max_disparity <= options.min_disparity) fail("max_disparity", "must exceed min_disparity");
-  if (options.window < 3 || options.window % 2 == 0) fail("window", "must be odd and >= 3");
+  // Upper bounds keep the work and the buffers a matcher allocates proportional to the image
+  // (a 999999-pixel window or a 1e6-disparity range would ask OpenCV for gigabytes).
+  if (options.min_disparity < 0 || options.min_disparity > kMaxDisparity) {
+    fail("min_disparity", "must be in 0.." + std::to_string(kMaxDisparity));
+  }
+  if (options.max_disparity <= options.min_disparity || options.max_disparity > kMaxDisparity) {
+    fail("max_disparity", "must exceed min_disparity and be at most " + std::to_string(kMaxDisparity));
+  }
+  if (options.window < 3 || options.window % 2 == 0 || options.window > kMaxWindow) {
+    fail("window", "must be odd and in 3.." + std::to_string(kMaxWindow));
+  }
   if (options.prefilter_cap < 1 || options.prefilter_cap > 127) fail("prefilter_cap", "must be in 1..127");
-  if (options.texture_threshold < 0) fail("texture_threshold", "must be >= 0");
-  if (options.texture_sigma <= 0) fail("texture_sigma", "must be positive");
-  if (options.uniqueness_threshold <= 0) fail("uniqueness_threshold", "must be positive");
+  if (!(options.texture_threshold >= 0)) fail("texture_threshold", "must be >= 0");
+  if (!(options.texture_sigma > 0 && options.texture_sigma <= 100)) fail("texture_sigma", "must be in (0, 100]");
+  if (!(options.uniqueness_threshold > 0)) fail("uniqueness_threshold", "must be positive");
   if (!(options.second_best_ratio > 0 && options.second_best_ratio <= 1)) {
     fail("second_best_ratio", "must be in (0, 1]");
   }
-  if (options.left_right_max_diff < 0) fail("left_right_max_diff", "must be >= 0");
-  if (options.threads < 1) fail("threads", "must be >= 1");
+  if (!(options.left_right_max_diff >= 0)) fail("left_right_max_diff", "must be >= 0");
+  if (options.threads < 1 || options.threads > 256) fail("threads", "must be in 1..256");
   if (options.opencv_texture_threshold < 0) fail("opencv_texture_threshold", "must be >= 0");
   if (options.opencv_uniqueness_ratio < 0) fail("opencv_uniqueness_ratio", "must be >= 0");
   if (options.opencv_speckle_window < 0) fail("opencv_speckle_window", "must be >= 0");

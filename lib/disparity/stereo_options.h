@@ -68,6 +68,10 @@ struct StereoOptions {
 // combination = sum | best_half.
 StereoOptions loadStereoOptions(IniSection& section);
 
+// Bounds on the disparity range and the SAD window, pixels.
+constexpr int kMaxDisparity = 4096;
+constexpr int kMaxWindow = 255;
+
 // Checks the values (also after command-line overrides); throws ConfigError naming the key.
 void validateStereoOptions(const StereoOptions& options, const std::string& section = "stereo");
 

@@ -8,6 +8,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "common/ini_section.h"
+
 namespace stereonav {
 namespace {
 
@@ -32,11 +34,14 @@ std::map<std::string, std::string> readYamlKeys(const std::string& path) {
   return keys;
 }
 
+// Map coordinates, resolutions and thresholds beyond this are damage, not maps.
+constexpr double kMaxMapValue = 1e7;
+
 double parseNumber(const std::string& path, const std::string& key, const std::string& text) {
-  std::istringstream in(text);
   double value = 0.0;
-  if (!(in >> value) || !std::isfinite(value)) {
-    throw std::runtime_error(path + ": " + key + ": not a number: '" + text + "'");
+  if (!parseFiniteDouble(text, value) || std::abs(value) > kMaxMapValue) {
+    throw std::runtime_error(path + ": " + key + ": expected a number in " + describeRange(-kMaxMapValue, kMaxMapValue) +
+                             ", got '" + text + "'");
   }
   return value;
 }
@@ -69,15 +74,18 @@ CellClass RosMap::at(double x, double y) const {
 RosMap loadRosMap(const std::string& yaml_path) {
   const std::map<std::string, std::string> keys = readYamlKeys(yaml_path);
   const double resolution = parseNumber(yaml_path, "resolution", required(keys, yaml_path, "resolution"));
-  if (resolution <= 0) throw std::runtime_error(yaml_path + ": resolution: must be > 0");
+  if (!(resolution >= 1e-4)) throw std::runtime_error(yaml_path + ": resolution: must be at least 1e-4 m");
 
   std::string origin = required(keys, yaml_path, "origin");
   for (char& c : origin) {
     if (c == '[' || c == ']' || c == ',') c = ' ';
   }
   std::istringstream origin_in(origin);
+  std::string x_text, y_text, yaw_text, extra;
   double x_min = 0, y_min = 0, yaw = 0;
-  if (!(origin_in >> x_min >> y_min >> yaw)) {
+  if (!(origin_in >> x_text >> y_text >> yaw_text) || (origin_in >> extra) || !parseFiniteDouble(x_text, x_min) ||
+      !parseFiniteDouble(y_text, y_min) || !parseFiniteDouble(yaw_text, yaw) || std::abs(x_min) > kMaxMapValue ||
+      std::abs(y_min) > kMaxMapValue) {
     throw std::runtime_error(yaml_path + ": origin: expected [x, y, yaw], got '" + keys.at("origin") + "'");
   }
   if (yaw != 0.0) throw std::runtime_error(yaml_path + ": origin: a rotated map (yaw != 0) is not supported");
@@ -96,8 +104,15 @@ RosMap loadRosMap(const std::string& yaml_path) {
   std::string image_path = required(keys, yaml_path, "image");
   const size_t slash = yaml_path.find_last_of('/');
   if (image_path.front() != '/' && slash != std::string::npos) image_path = yaml_path.substr(0, slash + 1) + image_path;
+  // Checked first so that OpenCV does not print its own warning before our one-line error.
+  if (!std::ifstream(image_path)) throw std::runtime_error(image_path + ": cannot open the map image (named in " + yaml_path + ")");
   // map_server averages the colour channels; so does a greyscale read (within rounding).
-  const cv::Mat1b image = cv::imread(image_path, cv::IMREAD_GRAYSCALE);
+  cv::Mat1b image;
+  try {
+    image = cv::imread(image_path, cv::IMREAD_GRAYSCALE);
+  } catch (const cv::Exception& error) {
+    throw std::runtime_error(image_path + ": cannot read the map image (" + error.err + ")");
+  }
   if (image.empty()) throw std::runtime_error(image_path + ": cannot read the map image (named in " + yaml_path + ")");
 
   cv::Mat1b classes(image.size());

@@ -34,9 +34,7 @@ cv::Mat3b drawScoreOverlay(const RosMap& map, const RosMap& truth, const MapScor
 void saveScoreOverlay(const RosMap& map, const RosMap& truth, const MapScoreOptions& options,
                       const std::string& path) {
   const cv::Mat3b image = drawScoreOverlay(map, truth, options);
-  writeFileAtomically(path, [&](const std::string& temporary_path) {
-    if (!cv::imwrite(temporary_path, image)) throw std::runtime_error(path + ": cannot write the overlay image");
-  });
+  writeImageAtomically(path, image);
 }
 
 }  // namespace stereonav

@@ -223,13 +223,9 @@ void saveDebugPanel(const cv::Mat3b& panel, const std::string& directory, size_t
   char name[32];
   std::snprintf(name, sizeof name, "panel_%06zu.png", frame_index);
   const std::string path = directory + "/" + name;
-  writeFileAtomically(path, [&](const std::string& temporary_path) {
-    // Naming a level makes OpenCV deflate instead of its default run-length strategy, which
-    // leaves the noisy camera tiles nearly uncompressed: panels come out half the size.
-    if (!cv::imwrite(temporary_path, panel, {cv::IMWRITE_PNG_COMPRESSION, 3})) {
-      throw std::runtime_error("cannot write debug panel '" + path + "'");
-    }
-  });
+  // Naming a level makes OpenCV deflate instead of its default run-length strategy, which leaves
+  // the noisy camera tiles nearly uncompressed: panels come out half the size.
+  writeImageAtomically(path, panel, {cv::IMWRITE_PNG_COMPRESSION, 3});
 }
 
 }  // namespace stereonav

@@ -5,6 +5,7 @@
 #include <mrpt/opengl/CSetOfObjects.h>
 #include <mrpt/opengl/stock_objects.h>
 #include <mrpt/poses/CPose3D.h>
+#include <mrpt/serialization/CArchive.h>
 
 #include <cmath>
 #include <stdexcept>
@@ -66,11 +67,8 @@ void saveScene(const mrpt::maps::CMetricMap& map, const std::vector<mrpt::poses:
     robot->setPose(mrpt::poses::CPose3D(path.back()));
     scene.insert(robot);
   }
-  writeFileAtomically(scene_path, [&](const std::string& temporary_path) {
-    if (!scene.saveToFile(temporary_path)) {
-      throw std::runtime_error("cannot write 3D scene '" + scene_path + "'");
-    }
-  });
+  // As COpenGLScene::saveToFile writes it, with every write checked.
+  writeGzArchiveAtomically(scene_path, [&](mrpt::serialization::CArchive& archive) { archive << scene; });
 }
 
 }  // namespace
@@ -89,10 +87,12 @@ DisparityTaggedGrid gridOfMap(const mrpt::maps::CMetricMap& map, const Occupancy
 void saveMapOutputs(const mrpt::maps::CMetricMap& map, const OccupancyScale& scale,
                     const std::vector<mrpt::poses::CPose2D>& robot_path, const std::string& prefix) {
   const DisparityTaggedGrid grid = gridOfMap(map, scale);
-  saveMrptGridmap(grid, prefix + ".gridmap");
-  saveGridImage(grid, prefix + ".png");
-  saveRosMapServer(grid, prefix + ".yaml");
-  saveScene(map, robot_path, prefix + ".3Dscene");
+  OutputBatch outputs;
+  outputs.write([&] { saveMrptGridmap(grid, prefix + ".gridmap"); });
+  outputs.write([&] { saveGridImage(grid, prefix + ".png"); });
+  outputs.write([&] { saveRosMapServer(grid, prefix + ".yaml"); });
+  outputs.write([&] { saveScene(map, robot_path, prefix + ".3Dscene"); });
+  outputs.throwIfFailed();
 }
 
 }  // namespace stereonav

@@ -23,6 +23,7 @@ DisparityTaggedGrid gridOfMap(const mrpt::maps::CMetricMap& map, const Occupancy
 //   <prefix>.yaml/.pgm ROS map_server map (grid_io.h)
 //   <prefix>.3Dscene   mrpt::opengl::COpenGLScene with the map, the robot's path (red line) and
 //                      the robot at its last pose, for SceneViewer3D
+// An output that cannot be written does not stop the others; then std::runtime_error names it.
 void saveMapOutputs(const mrpt::maps::CMetricMap& map, const OccupancyScale& scale,
                     const std::vector<mrpt::poses::CPose2D>& robot_path, const std::string& prefix);
 

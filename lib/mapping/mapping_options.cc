@@ -13,10 +13,7 @@ namespace {
 MapperOptions loadMapperOptions(IniSection& section) {
   MapperOptions options;
   options.virtual_scans = section.getBool("virtual_scans", options.virtual_scans);
-  options.panel_range_m = section.getDouble("panel_range_m", options.panel_range_m);
-  if (!(options.panel_range_m > 0.0)) {
-    throw ConfigError("[" + section.name() + "] panel_range_m: must be positive");
-  }
+  options.panel_range_m = section.getPositive("panel_range_m", options.panel_range_m, 1e3);
   return options;
 }
 
@@ -42,6 +39,11 @@ MappingOptions loadMappingOptions(const mrpt::config::CConfigFileBase& config) {
   }
   options.mapper = loadIniSection(config, "mapping", loadMapperOptions);
   options.localization = loadIniSection(config, "localization", loadLocalizationOptions);
+  if (options.rig && options.stereo.backend != StereoBackend::kSad && options.rig->secondaries.size() != 1) {
+    throw ConfigError(std::string("[stereo] backend: ") + toString(options.stereo.backend) +
+                      " (OpenCV) takes exactly one secondary camera; [rig] secondary_cameras has " +
+                      std::to_string(options.rig->secondaries.size()));
+  }
   return options;
 }
 

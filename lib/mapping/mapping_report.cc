@@ -62,6 +62,8 @@ std::string MappingReport::toJson() const {
   }
   json.key("interrupted").value(interrupted).key("calibration_warnings").beginArray();
   for (const std::string& warning : calibration_warnings) json.value(warning);
+  json.endArray().key("output_errors").beginArray();
+  for (const std::string& error : output_errors) json.value(error);
   json.endArray()
       .key("matched_pixel_fraction").value(matched_pixel_fraction)
       .key("valid_pixel_fraction").value(kept_pixel_fraction)

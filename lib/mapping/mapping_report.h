@@ -23,6 +23,7 @@ struct MappingReport {
   std::optional<RawlogDamage> damage;  // where reading stopped, if the rawlog is damaged
   bool interrupted = false;            // stopped by request (Ctrl-C) after a whole frame
   std::vector<std::string> calibration_warnings;
+  std::vector<std::string> output_errors;  // outputs that could not be written (the others were)
   // Fractions of all pixels of all mapped frames: with a stereo match, and kept by spike removal.
   double matched_pixel_fraction = 0.0;
   double kept_pixel_fraction = 0.0;

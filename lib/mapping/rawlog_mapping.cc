@@ -67,6 +67,7 @@ MappingReport mapRawlog(const MappingOptions& options, const MappingJob& job,
   mrpt::poses::CPose2D odometry;  // the last recorded; a frame without keeps it
   mrpt::poses::CPose2D pose;      // the one mapped with
   double matched_pixels = 0.0, kept_pixels = 0.0, pixels = 0.0;
+  OutputBatch outputs;
 
   while (auto frame = reader.next()) {
     if (!mapper) {
@@ -115,8 +116,12 @@ MappingReport mapRawlog(const MappingOptions& options, const MappingJob& job,
     kept_pixels += static_cast<double>(scanner.keptPixels());
     pixels += static_cast<double>(scanner.disparity().total());
     if (panels && (path.size() - 1) % std::max<size_t>(job.debug_panel_every, 1) == 0) {
-      saveDebugPanel(panels->render(scanner, path.size() - 1, pose), job.debug_panel_directory,
-                     path.size() - 1);
+      // A panel that cannot be written (a full disk) ends the panels, not the map.
+      outputs.write([&] {
+        saveDebugPanel(panels->render(scanner, path.size() - 1, pose), job.debug_panel_directory,
+                       path.size() - 1);
+      });
+      if (outputs.failed()) panels.reset();
     }
     if (!job.virtual_scan_rawlog.empty()) virtual_scans.add(*mapper->virtualScan(), odometry);
     if (callbacks.on_frame) callbacks.on_frame(path.size(), mapper->map());
@@ -134,17 +139,17 @@ MappingReport mapRawlog(const MappingOptions& options, const MappingJob& job,
     report.kept_pixel_fraction = kept_pixels / pixels;
   }
   const OccupancyScale& scale = options.grid.stereo.update.scale;
-  if (mapper) {
-    report.times = mapper->times();
-    saveMapOutputs(mapper->map(), scale, path, job.output_prefix);
-  } else {
-    saveMapOutputs(*createGridMap(options.grid), scale, path, job.output_prefix);
-  }
-  saveTumTrajectory(job.output_prefix + ".traj.tum", trajectory);
-  if (!job.virtual_scan_rawlog.empty()) virtual_scans.save(job.virtual_scan_rawlog);
+  if (mapper) report.times = mapper->times();
+  outputs.write([&] {
+    saveMapOutputs(mapper ? mapper->map() : *createGridMap(options.grid), scale, path, job.output_prefix);
+  });
+  if (!job.virtual_scan_rawlog.empty()) outputs.write([&] { virtual_scans.save(job.virtual_scan_rawlog); });
+  outputs.write([&] { saveTumTrajectory(job.output_prefix + ".traj.tum", trajectory); });
+  report.output_errors = outputs.errors();
   report.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  writeStringAtomically(job.output_prefix + ".stats.json", report.toJson());
+  outputs.write([&] { writeStringAtomically(job.output_prefix + ".stats.json", report.toJson()); });
+  outputs.throwIfFailed();
   return report;
 }
 

@@ -1,6 +1,5 @@
 #include "mapping/virtual_scan_recorder.h"
 
-#include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/serialization/CArchive.h>
 
@@ -21,12 +20,7 @@ void VirtualScanRecorder::add(const mrpt::obs::CObservation2DRangeScan& scan,
 }
 
 void VirtualScanRecorder::save(const std::string& path) const {
-  writeFileAtomically(path, [&](const std::string& temporary_path) {
-    mrpt::io::CFileGZOutputStream file;
-    if (!file.open(temporary_path)) {
-      throw std::runtime_error("cannot write rawlog '" + path + "'");
-    }
-    auto archive = mrpt::serialization::archiveFrom(file);
+  writeGzArchiveAtomically(path, [&](mrpt::serialization::CArchive& archive) {
     for (const auto& observation : observations_) archive << *observation;
   });
 }

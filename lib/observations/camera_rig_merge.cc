@@ -41,8 +41,7 @@ class MismatchReport {
 CalibrationTolerance loadCalibrationTolerance(IniSection& section) {
   CalibrationTolerance tolerance;
   const auto load = [&](const std::string& key, double& value) {
-    value = section.getDouble(key, value);
-    if (value < 0) throw ConfigError("[" + section.name() + "] " + key + ": must not be negative");
+    value = section.getNonNegative(key, value);
   };
   load("tolerance_focal_px", tolerance.focal_px);
   load("tolerance_principal_point_px", tolerance.principal_point_px);

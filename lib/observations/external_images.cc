@@ -26,9 +26,7 @@ void storeImageExternally(mrpt::img::CImage& image, const std::string& directory
                           const std::string& file_name) {
   const std::string path = directory + "/" + file_name;
   const cv::Mat pixels = image.asCvMatRef();
-  writeFileAtomically(path, [&](const std::string& temporary) {
-    if (!cv::imwrite(temporary, pixels)) throw std::runtime_error(path + ": cannot write image");
-  });
+  writeImageAtomically(path, pixels);
   image.setExternalStorage(file_name);
 }
 

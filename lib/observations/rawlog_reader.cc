@@ -9,6 +9,8 @@
 #include <map>
 #include <sstream>
 
+#include "common/error_text.h"
+#include "observations/deserialization_budget.h"
 #include "observations/external_images.h"
 
 namespace stereonav {
@@ -69,6 +71,7 @@ RawlogReader::RawlogReader(const std::string& path, RawlogReaderOptions options)
     // reported below, without MRPT's backtrace
   }
   if (!opened) throw std::runtime_error(path_ + ": cannot open rawlog");
+  uncompressed_size_ = uncompressedSize(path_);
 }
 
 std::optional<RigFrame> RawlogReader::next() {
@@ -76,13 +79,19 @@ std::optional<RigFrame> RawlogReader::next() {
     const uint64_t offset = stream_.getPosition();
     mrpt::serialization::CSerializable::Ptr object;
     try {
+      const uint64_t remaining = uncompressed_size_ > offset ? uncompressed_size_ - offset : 0;
+      DeserializationBudget budget(DeserializationBudget::forRemainingBytes(remaining));
       object = archive_.ReadObject();
+    } catch (const std::bad_alloc&) {
+      finished_ = true;
+      damage_ = RawlogDamage{object_index_, offset, "a size it declares exceeds what is left of the file"};
+      return std::nullopt;
     } catch (const std::exception& e) {
       finished_ = true;
       // Nothing at all left to read is the normal end; anything else is a damaged object.
       const bool clean_end = dynamic_cast<const mrpt::serialization::CExceptionEOF*>(&e) &&
                              stream_.getPosition() == offset;
-      if (!clean_end) damage_ = RawlogDamage{object_index_, offset, e.what()};
+      if (!clean_end) damage_ = RawlogDamage{object_index_, offset, oneLineMessage(e.what())};
       return std::nullopt;
     }
     ++object_index_;

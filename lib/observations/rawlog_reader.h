@@ -32,7 +32,7 @@ struct RawlogReaderOptions {
 struct RawlogDamage {
   size_t object_index = 0;   // of the first unreadable object, counting from 0
   uint64_t byte_offset = 0;  // where that object starts, in the uncompressed stream
-  std::string error;         // what MRPT's deserializer said
+  std::string error;         // what MRPT's deserializer said, in one line (oneLineMessage)
 
   std::string describe(const std::string& path) const;
 };
@@ -91,6 +91,7 @@ class RawlogReader {
   mrpt::io::CFileGZInputStream stream_;
   mrpt::serialization::CArchiveStreamBase<mrpt::io::CFileGZInputStream> archive_;
   size_t object_index_ = 0;
+  uint64_t uncompressed_size_ = 0;  // bounds what a record may declare (DeserializationBudget)
   bool finished_ = false;
   std::optional<RawlogDamage> damage_;
   SkippedFrames skipped_;

@@ -58,10 +58,7 @@ RawlogWriterOptions loadRawlogWriterOptions(IniSection& section) {
   } else {
     fail("images", "expected embedded or external, got '" + images + "'");
   }
-  options.compression_level = section.getInt("compression_level", options.compression_level);
-  if (options.compression_level < 0 || options.compression_level > 9) {
-    fail("compression_level", "must be 0 (uncompressed) to 9");
-  }
+  options.compression_level = section.getInt("compression_level", options.compression_level, 0, 9);
   options.sensor_label = section.getString("sensor_label", options.sensor_label);
   if (options.sensor_label.empty()) fail("sensor_label", "must not be empty");
   return options;

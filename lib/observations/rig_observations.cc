@@ -186,6 +186,9 @@ RigFrame fromRigObservations(const mrpt::obs::CObservationStereoImages& pair,
   rig.baseline_m = baseline;
   rig.pose_on_robot = reference_is_left ? left_pose : right_pose;
   rig.secondaries = {SecondaryCamera{reference_is_left ? 1.0 : -1.0, 0.0}};
+  if (const std::string problem = implausibleRig(rig); !problem.empty()) {
+    throw ObservationRejected(RejectReason::kMissingCalibration, label + ": implausible calibration: " + problem);
+  }
 
   const cv::Mat left =
       loadImage(pair.imageLeft, pair.leftCamera, images_directory, label + " left");
@@ -200,6 +203,9 @@ RigFrame fromRigObservations(const mrpt::obs::CObservationStereoImages& pair,
     requireRectifiedLike(extra->cameraParams, reference, which);
     const auto offset = coplanarOffset(rig.pose_on_robot, extra->cameraPose, which);
     rig.secondaries.push_back({offset.x / baseline, offset.y / baseline});
+    if (const std::string problem = implausibleRig(rig); !problem.empty()) {
+      throw ObservationRejected(RejectReason::kMissingCalibration, which + ": implausible calibration: " + problem);
+    }
     frame.secondaries.push_back(
         loadImage(extra->image, extra->cameraParams, images_directory, which));
   }

@@ -29,11 +29,20 @@ double latticeAbove(double coordinate, double resolution) {
 
 void DisparityTaggedGrid::reset(const GridLimits& limits) {
   const double r = limits.resolution;
+  max_cells_ = limits.max_cells;
+  reached_cell_limit_ = false;
   const double first_col = latticeBelow(limits.min_x, r);
   const double first_row = latticeBelow(limits.min_y, r);
   frame_ = {first_col * r, first_row * r, r};
-  width_ = std::max(1, static_cast<int>(latticeAbove(limits.max_x, r) - first_col));
-  height_ = std::max(1, static_cast<int>(latticeAbove(limits.max_y, r) - first_row));
+  const double width = std::max(1.0, latticeAbove(limits.max_x, r) - first_col);
+  const double height = std::max(1.0, latticeAbove(limits.max_y, r) - first_row);
+  if (!(width * height <= static_cast<double>(limits.max_cells) && width < CellWindow::kIndexRange &&
+        height < CellWindow::kIndexRange)) {
+    throw std::invalid_argument("grid of " + std::to_string(width) + " x " + std::to_string(height) +
+                                " cells exceeds max_cells");
+  }
+  width_ = static_cast<int>(width);
+  height_ = static_cast<int>(height);
   occupancy_.assign(static_cast<size_t>(width_) * height_, scale_.unknown());
   tags_.assign(occupancy_.size(), kNoTag);
   close_free_.assign(occupancy_.size(), 0);
@@ -50,23 +59,45 @@ bool DisparityTaggedGrid::cellAt(double x, double y, int& col, int& row) const {
 
 void DisparityTaggedGrid::growToInclude(const WorldBounds& bounds, double margin_m) {
   const double r = frame_.resolution;
-  // Whole cells needed on each side; zero when the bounds are already inside.
+  // Whole cells wanted on each side (zero when the bounds are already inside), in double: bounds
+  // from far readings can be kilometres away.
+  // No side can usefully grow by more than max_cells, which keeps the scale below in range.
   const auto cells = [&](double outside_by) {
-    return outside_by > 0.0 ? static_cast<int>(std::ceil((outside_by + margin_m) / r)) : 0;
+    return outside_by > 0.0 ? std::min(std::ceil((outside_by + margin_m) / r), static_cast<double>(max_cells_)) : 0.0;
   };
-  const int grow_left = cells(minX() - bounds.min_x);
-  const int grow_right = cells(bounds.max_x - maxX());
-  const int grow_down = cells(minY() - bounds.min_y);
-  const int grow_up = cells(bounds.max_y - maxY());
-  if (grow_left + grow_right + grow_down + grow_up == 0) return;
-
-  const int new_width = width_ + grow_left + grow_right;
-  const int new_height = height_ + grow_down + grow_up;
+  double grow_left = cells(minX() - bounds.min_x);
+  double grow_right = cells(bounds.max_x - maxX());
+  double grow_down = cells(minY() - bounds.min_y);
+  double grow_up = cells(bounds.max_y - maxY());
+  if (!(grow_left + grow_right + grow_down + grow_up > 0.0)) return;
+  // Bounded by max_cells: the growth on every side is scaled down by the largest factor that
+  // fits (found by bisection); regions beyond the capped grid are clipped by the rasteriser.
+  const auto fits = [&](double scale) {
+    const double w = width_ + std::floor(scale * grow_left) + std::floor(scale * grow_right);
+    const double h = height_ + std::floor(scale * grow_down) + std::floor(scale * grow_up);
+    return w * h <= static_cast<double>(max_cells_) && w < CellWindow::kIndexRange &&
+           h < CellWindow::kIndexRange;
+  };
+  if (!fits(1.0)) {
+    reached_cell_limit_ = true;
+    double low = 0.0, high = 1.0;
+    for (int i = 0; i < 60; ++i) {
+      const double middle = 0.5 * (low + high);
+      (fits(middle) ? low : high) = middle;
+    }
+    grow_left = std::floor(low * grow_left);
+    grow_right = std::floor(low * grow_right);
+    grow_down = std::floor(low * grow_down);
+    grow_up = std::floor(low * grow_up);
+    if (grow_left + grow_right + grow_down + grow_up == 0.0) return;
+  }
+  const int new_width = width_ + static_cast<int>(grow_left) + static_cast<int>(grow_right);
+  const int new_height = height_ + static_cast<int>(grow_down) + static_cast<int>(grow_up);
   std::vector<uint8_t> occupancy(static_cast<size_t>(new_width) * new_height, scale_.unknown());
   std::vector<float> tags(occupancy.size(), kNoTag);
   std::vector<uint8_t> close_free(occupancy.size(), 0);
   for (int row = 0; row < height_; ++row) {
-    const size_t to = static_cast<size_t>(row + grow_down) * new_width + grow_left;
+    const size_t to = static_cast<size_t>(row + grow_down) * new_width + static_cast<size_t>(grow_left);
     std::copy_n(occupancyRow(row), width_, occupancy.begin() + to);
     std::copy_n(tagRow(row), width_, tags.begin() + to);
     std::copy_n(closeFreeRow(row), width_, close_free.begin() + to);

@@ -48,8 +48,10 @@ class DisparityTaggedGrid {
   const uint8_t* closeFreeRow(int row) const { return &close_free_[index(0, row)]; }
 
   // Grows the grid by whole cells on the sides where `bounds` sticks out, by enough to cover it
-  // plus `margin_m`; existing cells keep their world coordinates and values. Never shrinks.
+  // plus `margin_m`; existing cells keep their world coordinates and values. Never shrinks, and
+  // never beyond the limits' max_cells (then reachedCellLimit() turns true).
   void growToInclude(const WorldBounds& bounds, double margin_m);
+  bool reachedCellLimit() const { return reached_cell_limit_; }
 
   // Back to the initial limits, all cells unknown, untagged and not close-free.
   void reset(const GridLimits& limits);
@@ -73,6 +75,8 @@ class DisparityTaggedGrid {
   std::vector<uint8_t> occupancy_;
   std::vector<float> tags_;
   std::vector<uint8_t> close_free_;
+  int64_t max_cells_ = 0;
+  bool reached_cell_limit_ = false;
 };
 
 }  // namespace stereonav

@@ -1,6 +1,5 @@
 #include "occupancy_grid/grid_io.h"
 
-#include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/serialization/CArchive.h>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
@@ -26,14 +25,6 @@ cv::Mat1b gridPicture(const DisparityTaggedGrid& grid) {
   return picture;
 }
 
-void writeImage(const cv::Mat1b& picture, const std::string& path) {
-  writeFileAtomically(path, [&](const std::string& temporary_path) {
-    if (!cv::imwrite(temporary_path, picture)) {
-      throw std::runtime_error("cannot write image '" + path + "'");
-    }
-  });
-}
-
 std::string withoutExtension(const std::string& path) {
   const size_t slash = path.find_last_of('/');
   const size_t dot = path.find_last_of('.');
@@ -50,22 +41,16 @@ std::string fileName(const std::string& path) {
 
 void saveMrptGridmap(const DisparityTaggedGrid& grid, const std::string& path) {
   const mrpt::maps::COccupancyGridMap2D mrpt_grid = toMrptOccupancyGrid(grid);
-  writeFileAtomically(path, [&](const std::string& temporary_path) {
-    mrpt::io::CFileGZOutputStream file;
-    if (!file.open(temporary_path)) {
-      throw std::runtime_error("cannot write MRPT gridmap '" + path + "'");
-    }
-    mrpt::serialization::archiveFrom(file) << mrpt_grid;
-  });
+  writeGzArchiveAtomically(path, [&](mrpt::serialization::CArchive& archive) { archive << mrpt_grid; });
 }
 
 void saveGridImage(const DisparityTaggedGrid& grid, const std::string& path) {
-  writeImage(gridPicture(grid), path);
+  writeImageAtomically(path, gridPicture(grid));
 }
 
 void saveRosMapServer(const DisparityTaggedGrid& grid, const std::string& yaml_path) {
   const std::string image_path = withoutExtension(yaml_path) + ".pgm";
-  writeImage(gridPicture(grid), image_path);
+  writeImageAtomically(image_path, gridPicture(grid));
 
   const OccupancyScale& scale = grid.scale();
   std::ostringstream yaml;

@@ -1,5 +1,10 @@
 #include "occupancy_grid/grid_options.h"
 
+#include "sensor_model/polygon_rasterizer.h"
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
 #include <string>
 
 namespace stereonav {
@@ -14,16 +19,29 @@ namespace {
 
 GridLimits loadGridLimits(IniSection& section) {
   GridLimits limits;
-  limits.min_x = section.getDouble("min_x", limits.min_x);
-  limits.max_x = section.getDouble("max_x", limits.max_x);
-  limits.min_y = section.getDouble("min_y", limits.min_y);
-  limits.max_y = section.getDouble("max_y", limits.max_y);
-  limits.resolution = section.getDouble("resolution", limits.resolution);
-  limits.growth_margin_m = section.getDouble("growth_margin_m", limits.growth_margin_m);
-  if (!(limits.resolution > 0.0)) fail(section, "resolution", "must be positive (metres per cell)");
+  constexpr double kMax = kMaxGridCoordinate;
+  limits.min_x = section.getDouble("min_x", limits.min_x, -kMax, kMax);
+  limits.max_x = section.getDouble("max_x", limits.max_x, -kMax, kMax);
+  limits.min_y = section.getDouble("min_y", limits.min_y, -kMax, kMax);
+  limits.max_y = section.getDouble("max_y", limits.max_y, -kMax, kMax);
+  limits.resolution = section.getDouble("resolution", limits.resolution, 1e-3, 100.0);
+  limits.growth_margin_m = section.getDouble("growth_margin_m", limits.growth_margin_m, 0.0, 1000.0);
+  limits.max_cells = section.getInt("max_cells", static_cast<int>(limits.max_cells), 1,
+                                    std::numeric_limits<int>::max());
   if (!(limits.max_x > limits.min_x)) fail(section, "max_x", "must be greater than min_x");
   if (!(limits.max_y > limits.min_y)) fail(section, "max_y", "must be greater than min_y");
-  if (!(limits.growth_margin_m >= 0.0)) fail(section, "growth_margin_m", "must not be negative");
+  const double cells = std::ceil((limits.max_x - limits.min_x) / limits.resolution) *
+                       std::ceil((limits.max_y - limits.min_y) / limits.resolution);
+  if (cells > static_cast<double>(limits.max_cells) ||
+      (limits.max_x - limits.min_x) / limits.resolution >= CellWindow::kIndexRange ||
+      (limits.max_y - limits.min_y) / limits.resolution >= CellWindow::kIndexRange) {
+    char why[200];
+    std::snprintf(why, sizeof why,
+                  "%lld, but the initial grid (min_x..max_x, min_y..max_y at resolution) has %.3g cells "
+                  "(or a side over 2^20); raise max_cells, coarsen resolution or shrink the limits",
+                  static_cast<long long>(limits.max_cells), cells);
+    fail(section, "max_cells", why);
+  }
   return limits;
 }
 
@@ -38,10 +56,7 @@ GridUpdateOptions loadGridUpdateOptions(IniSection& section) {
   options.accuracy_preservation =
       section.getBool("accuracy_preservation", options.accuracy_preservation);
   options.free_preservation_range_m =
-      section.getDouble("free_preservation_range_m", options.free_preservation_range_m);
-  if (!(options.free_preservation_range_m >= 0.0)) {
-    fail(section, "free_preservation_range_m", "must not be negative (0 = off)");
-  }
+      section.getDouble("free_preservation_range_m", options.free_preservation_range_m, 0.0, 1000.0);
   if (scale.g_min < 0 || scale.g_min >= 255) fail(section, "g_min", "must be in 0..254");
   if (scale.g_max <= scale.g_min || scale.g_max > 255) {
     fail(section, "g_max", "must be in g_min+1..255");

@@ -16,9 +16,15 @@ struct GridLimits {
   // When a scan's regions leave the grid it grows by whole cells to cover them plus this margin,
   // so that a moving robot does not regrow the grid on every scan.
   double growth_margin_m = 2.0;
+  // Bound on the grid's cells (about 6 bytes each): it stops growing there, and readings beyond
+  // are left out. 16M cells are 200 m x 200 m at 5 cm.
+  int64_t max_cells = 16'000'000;
 };
 
-// Keys: min_x, max_x, min_y, max_y, resolution, growth_margin_m.
+// Bound on |min_x|, |max_x|, |min_y|, |max_y|, metres.
+constexpr double kMaxGridCoordinate = 1e6;
+
+// Keys: min_x, max_x, min_y, max_y, resolution, growth_margin_m, max_cells.
 GridLimits loadGridLimits(IniSection& section);
 
 enum class CellClass { kFree, kUnknown, kOccupied };

@@ -2,6 +2,7 @@
 
 #include <mrpt/core/bits_math.h>
 
+#include <cmath>
 #include <sstream>
 
 namespace stereonav {
@@ -25,8 +26,14 @@ std::vector<SecondaryCamera> parseSecondaryCameras(const std::string& text, cons
     std::stringstream one(item);
     SecondaryCamera camera;
     std::string extra;
-    if (!(one >> camera.bx >> camera.by) || (one >> extra)) {
+    std::string bx, by;
+    if (!(one >> bx >> by) || (one >> extra) || !parseFiniteDouble(bx, camera.bx) ||
+        !parseFiniteDouble(by, camera.by)) {
       throw ConfigError(what + ": expected 'bx by; bx by; ...', got '" + text + "'");
+    }
+    if (std::abs(camera.bx) > kMaxRelativeBaseline || std::abs(camera.by) > kMaxRelativeBaseline) {
+      throw ConfigError(what + ": bx and by must be in " +
+                        describeRange(-kMaxRelativeBaseline, kMaxRelativeBaseline) + ", got '" + text + "'");
     }
     if (camera.bx == 0.0 && camera.by == 0.0) {
       throw ConfigError(what + ": a secondary camera cannot sit on the reference camera (0 0)");
@@ -37,29 +44,63 @@ std::vector<SecondaryCamera> parseSecondaryCameras(const std::string& text, cons
   return cameras;
 }
 
+namespace {
+
+constexpr double kMinFocalPx = 1e-3, kMaxFocalPx = 1e6;
+constexpr double kMinBaselineM = 1e-4, kMaxBaselineM = 100.0;
+constexpr double kMaxMountOffsetM = 100.0;
+
+}  // namespace
+
+std::string implausibleRig(const CameraRig& rig) {
+  const PinholeCamera& camera = rig.reference;
+  if (camera.width < 1 || camera.width > kMaxImageSide || camera.height < 1 || camera.height > kMaxImageSide) {
+    return "image size " + std::to_string(camera.width) + "x" + std::to_string(camera.height) + " outside 1.." +
+           std::to_string(kMaxImageSide);
+  }
+  if (!(camera.focal_px >= kMinFocalPx && camera.focal_px <= kMaxFocalPx)) {
+    return "focal length " + std::to_string(camera.focal_px) + " px outside " + describeRange(kMinFocalPx, kMaxFocalPx);
+  }
+  if (!(std::abs(camera.cx) <= 2.0 * camera.width && std::abs(camera.cy) <= 2.0 * camera.height)) {
+    return "principal point far outside the image";
+  }
+  if (!(rig.baseline_m >= kMinBaselineM && rig.baseline_m <= kMaxBaselineM)) {
+    return "baseline " + std::to_string(rig.baseline_m) + " m outside " + describeRange(kMinBaselineM, kMaxBaselineM);
+  }
+  for (const SecondaryCamera& secondary : rig.secondaries) {
+    if (!(std::abs(secondary.bx) <= kMaxRelativeBaseline && std::abs(secondary.by) <= kMaxRelativeBaseline)) {
+      return "a secondary camera more than " + std::to_string(static_cast<int>(kMaxRelativeBaseline)) +
+             " baselines away";
+    }
+  }
+  const auto& pose = rig.pose_on_robot;
+  for (const double value : {pose.x(), pose.y(), pose.z(), pose.yaw(), pose.pitch(), pose.roll()}) {
+    if (!(std::abs(value) <= kMaxMountOffsetM)) return "camera pose on the robot not finite or too far";
+  }
+  return "";
+}
+
 CameraRig loadCameraRig(IniSection& section) {
   CameraRig rig;
   auto& camera = rig.reference;
-  camera.width = section.getInt("width", camera.width);
-  camera.height = section.getInt("height", camera.height);
-  camera.focal_px = section.getDouble("focal_px", camera.focal_px);
-  camera.cx = section.getDouble("cx", (camera.width - 1) / 2.0);
-  camera.cy = section.getDouble("cy", (camera.height - 1) / 2.0);
-  rig.baseline_m = section.getDouble("baseline_m", rig.baseline_m);
+  // Ranges: physically sensible bounds that also keep every derived size finite and small
+  // (image buffers, f B / d, the mount pose).
+  camera.width = section.getInt("width", camera.width, 1, kMaxImageSide);
+  camera.height = section.getInt("height", camera.height, 1, kMaxImageSide);
+  camera.focal_px = section.getDouble("focal_px", camera.focal_px, kMinFocalPx, kMaxFocalPx);
+  camera.cx = section.getDouble("cx", (camera.width - 1) / 2.0, -camera.width, 2.0 * camera.width);
+  camera.cy = section.getDouble("cy", (camera.height - 1) / 2.0, -camera.height, 2.0 * camera.height);
+  rig.baseline_m = section.getDouble("baseline_m", rig.baseline_m, kMinBaselineM, kMaxBaselineM);
   const std::string cameras = section.getString("secondary_cameras", "");
   if (!cameras.empty()) {
     rig.secondaries = parseSecondaryCameras(cameras, "[" + section.name() + "] secondary_cameras");
   }
-  const auto fail = [&](const std::string& key, const std::string& why) {
-    throw ConfigError("[" + section.name() + "] " + key + ": " + why);
-  };
-  if (camera.width <= 0 || camera.height <= 0) fail("width", "image size must be positive");
-  if (camera.focal_px <= 0) fail("focal_px", "must be positive");
-  if (rig.baseline_m <= 0) fail("baseline_m", "must be positive");
   rig.pose_on_robot = CameraRig::opticalPoseOnRobot(
-      section.getDouble("mount_x", 0.0), section.getDouble("mount_y", 0.0),
-      section.getDouble("mount_z", 0.5), mrpt::DEG2RAD(section.getDouble("mount_yaw_deg", 0.0)),
-      mrpt::DEG2RAD(section.getDouble("mount_tilt_deg", 0.0)));
+      section.getDouble("mount_x", 0.0, -kMaxMountOffsetM, kMaxMountOffsetM),
+      section.getDouble("mount_y", 0.0, -kMaxMountOffsetM, kMaxMountOffsetM),
+      section.getDouble("mount_z", 0.5, -kMaxMountOffsetM, kMaxMountOffsetM),
+      mrpt::DEG2RAD(section.getDouble("mount_yaw_deg", 0.0, -360.0, 360.0)),
+      mrpt::DEG2RAD(section.getDouble("mount_tilt_deg", 0.0, -90.0, 90.0)));
   return rig;
 }
 

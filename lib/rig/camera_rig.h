@@ -28,6 +28,12 @@ struct SecondaryCamera {
   double by = 0.0;
 };
 
+// Bound on |bx| and |by|: a secondary camera at most this many unit baselines away. It keeps
+// bx*d a sensible pixel offset (a 1e9 baseline would overflow the matcher's pixel arithmetic).
+constexpr double kMaxRelativeBaseline = 1000.0;
+// Bound on the reference image's width and height, pixels.
+constexpr int kMaxImageSide = 16384;
+
 // The whole head: the reference camera, its secondary cameras, and where it is on the robot.
 struct CameraRig {
   PinholeCamera reference;
@@ -56,6 +62,11 @@ struct CameraRig {
 //   secondary_cameras  "bx by; bx by; ..." e.g. "-1 0; 0 -1"
 //   mount_x, mount_y, mount_z (metres), mount_yaw_deg, mount_tilt_deg (down is positive)
 CameraRig loadCameraRig(IniSection& section);
+
+// What makes a rig from elsewhere (a rawlog's calibration) unusable, "" if nothing: the ranges
+// loadCameraRig enforces (image size, focal length, principal point, baseline, secondaries,
+// a finite mount pose), so that every size and offset derived from it stays bounded.
+std::string implausibleRig(const CameraRig& rig);
 
 // Parses "bx by; bx by; ..."; throws ConfigError naming `what` on malformed text.
 std::vector<SecondaryCamera> parseSecondaryCameras(const std::string& text, const std::string& what);

@@ -9,12 +9,14 @@ namespace {
 constexpr double kIndexRange = CellWindow::kIndexRange;
 
 // The first cell whose centre (index + 0.5) is at or beyond u, for |u| < kIndexRange (windows
-// keep it there): ceil(u - 0.5), computed as
+// keep it there; farther values and NaN are clamped to it, so no far vertex can overflow the conversion):
+// ceil(u - 0.5), computed as
 // kIndexRange - trunc(kIndexRange + 0.5 - u) since truncating a positive value floors it. One
 // conversion, where std::ceil is a library call without SSE4.1 and truncate-and-compare converts
 // back to double, which makes each row wait for the previous one. The offset rounds u to 2^-32
 // cells, far below the rounding in u itself; exact when u - 0.5 is a whole number.
 inline int firstCellFrom(double u) {
+  u = u > -kIndexRange ? std::min(u, kIndexRange) : -kIndexRange;  // NaN too
   return static_cast<int>(kIndexRange) - static_cast<int>(kIndexRange + 0.5 - u);
 }
 

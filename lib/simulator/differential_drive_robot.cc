@@ -26,22 +26,17 @@ constexpr int kContactBisections = 20;
 
 DifferentialDriveOptions loadDifferentialDriveOptions(IniSection& section) {
   DifferentialDriveOptions options;
-  options.max_speed_mps = section.getPositive("max_speed_mps", options.max_speed_mps);
-  options.max_turn_rate = section.getPositive("max_turn_rate", options.max_turn_rate);
-  options.max_acceleration = section.getPositive("max_acceleration", options.max_acceleration);
-  options.max_turn_acceleration = section.getPositive("max_turn_acceleration", options.max_turn_acceleration);
-  options.radius_m = section.getPositive("radius_m", options.radius_m);
-  options.height_m = section.getPositive("height_m", options.height_m);
-  options.odometry_distance_noise = section.getNonNegative("odometry_distance_noise", options.odometry_distance_noise);
-  options.odometry_turn_noise = section.getNonNegative("odometry_turn_noise", options.odometry_turn_noise);
-  options.odometry_drift_rad_per_m = section.getNonNegative("odometry_drift_rad_per_m", options.odometry_drift_rad_per_m);
-  options.odometry_distance_bias = section.getDouble("odometry_distance_bias", options.odometry_distance_bias);
-  options.odometry_turn_bias = section.getDouble("odometry_turn_bias", options.odometry_turn_bias);
-  for (const double bias : {options.odometry_distance_bias, options.odometry_turn_bias}) {
-    if (!(std::abs(bias) < 0.5)) {
-      throw ConfigError("[" + section.name() + "] odometry_*_bias: must be within (-0.5, 0.5)");
-    }
-  }
+  options.max_speed_mps = section.getPositive("max_speed_mps", options.max_speed_mps, 100.0);
+  options.max_turn_rate = section.getPositive("max_turn_rate", options.max_turn_rate, 100.0);
+  options.max_acceleration = section.getPositive("max_acceleration", options.max_acceleration, 1000.0);
+  options.max_turn_acceleration = section.getPositive("max_turn_acceleration", options.max_turn_acceleration, 1000.0);
+  options.radius_m = section.getPositive("radius_m", options.radius_m, 100.0);
+  options.height_m = section.getPositive("height_m", options.height_m, 100.0);
+  options.odometry_distance_noise = section.getNonNegative("odometry_distance_noise", options.odometry_distance_noise, 10.0);
+  options.odometry_turn_noise = section.getNonNegative("odometry_turn_noise", options.odometry_turn_noise, 10.0);
+  options.odometry_drift_rad_per_m = section.getNonNegative("odometry_drift_rad_per_m", options.odometry_drift_rad_per_m, 10.0);
+  options.odometry_distance_bias = section.getDouble("odometry_distance_bias", options.odometry_distance_bias, -0.5, 0.5);
+  options.odometry_turn_bias = section.getDouble("odometry_turn_bias", options.odometry_turn_bias, -0.5, 0.5);
   options.seed = section.getInt("seed", options.seed);
   return options;
 }

@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <limits>
 #include <iomanip>
 #include <sstream>
 #include <stdexcept>
@@ -17,10 +19,9 @@ namespace stereonav {
 
 GroundTruthMapOptions loadGroundTruthMapOptions(IniSection& section) {
   GroundTruthMapOptions options;
-  options.resolution_m = section.getDouble("resolution_m", options.resolution_m);
-  options.margin_m = section.getDouble("margin_m", options.margin_m);
-  if (!(options.resolution_m > 0.0)) throw ConfigError("[" + section.name() + "] resolution_m: must be positive");
-  if (!(options.margin_m >= 0.0)) throw ConfigError("[" + section.name() + "] margin_m: must be >= 0");
+  options.resolution_m = section.getDouble("resolution_m", options.resolution_m, 1e-3, 100.0);
+  options.margin_m = section.getNonNegative("margin_m", options.margin_m, 1000.0);
+  options.max_cells = section.getInt("max_cells", options.max_cells, 1, std::numeric_limits<int>::max());
   return options;
 }
 
@@ -30,8 +31,18 @@ GroundTruthMap::GroundTruthMap(const World& world, const GroundTruthMapOptions& 
   const double* bounds = world.bounds;
   x_min_ = bounds[0] - options.margin_m;
   y_min_ = bounds[1] - options.margin_m;
-  const int width = static_cast<int>(std::ceil((bounds[2] + options.margin_m - x_min_) / resolution_));
-  const int height = static_cast<int>(std::ceil((bounds[3] + options.margin_m - y_min_) / resolution_));
+  const double cols = std::ceil((bounds[2] + options.margin_m - x_min_) / resolution_);
+  const double rows = std::ceil((bounds[3] + options.margin_m - y_min_) / resolution_);
+  if (!(cols * rows <= options.max_cells)) {
+    char why[200];
+    std::snprintf(why, sizeof why,
+                  "[ground_truth_map] max_cells: the world's map needs %.0f x %.0f cells, more than %d; "
+                  "raise max_cells or resolution_m",
+                  cols, rows, options.max_cells);
+    throw ConfigError(why);
+  }
+  const int width = static_cast<int>(cols);
+  const int height = static_cast<int>(rows);
   cells_ = cv::Mat1b(std::max(height, 1), std::max(width, 1), kUnknown);
   for (int iy = 0; iy < cells_.rows; ++iy) {
     for (int ix = 0; ix < cells_.cols; ++ix) {
@@ -66,9 +77,7 @@ void GroundTruthMap::writeRosMap(const std::string& yaml_path) const {
 
   cv::Mat1b image;
   cv::flip(cells_, image, 0);  // image row 0 is the top of the map (largest y)
-  writeFileAtomically(image_path, [&](const std::string& temporary_path) {
-    if (!cv::imwrite(temporary_path, image)) throw std::runtime_error("cannot write " + image_path);
-  });
+  writeImageAtomically(image_path, image);
   std::ostringstream yaml;
   yaml << std::setprecision(10);
   yaml << "image: " << image_name << "\n"

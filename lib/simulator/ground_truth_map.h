@@ -16,6 +16,8 @@ struct GroundTruthMapOptions {
   double band_max_z = 1.0;
   // Unknown cells around the world's bounds, so the map shows where the world ends.
   double margin_m = 0.5;
+  // Bound on the map's cells (one byte each); a larger world needs it raised.
+  int max_cells = 16'000'000;
 };
 
 // Section [ground_truth_map]: resolution_m, margin_m. The height band is the robot's, set by the

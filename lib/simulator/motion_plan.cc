@@ -1,11 +1,17 @@
 #include "simulator/motion_plan.h"
 
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
 #include "common/ini_section.h"
 
 namespace stereonav {
+namespace {
+
+constexpr double kMaxPlanValue = 1e6;
+
+}  // namespace
 
 MotionPlan parseMotionPlan(const std::string& text, const std::string& file_name) {
   MotionPlan plan;
@@ -18,6 +24,14 @@ MotionPlan parseMotionPlan(const std::string& text, const std::string& file_name
     if (first == std::string::npos || line[first] == '#') continue;
     const std::string where = file_name + ":" + std::to_string(line_number);
     const std::vector<double> numbers = parseNumberList(line, where);
+    // Coordinates, times and speeds far beyond any robot's are mistakes (and would make the
+    // controller's arithmetic meaningless).
+    for (double number : numbers) {
+      if (std::abs(number) > kMaxPlanValue) {
+        throw ConfigError(where + ": values must be in " + describeRange(-kMaxPlanValue, kMaxPlanValue) +
+                          ", got '" + line + "'");
+      }
+    }
     if (numbers.size() == 2) {
       if (!plan.commands.empty()) throw ConfigError(where + ": waypoint 'x y' among timed commands 't v w'");
       plan.waypoints.push_back({numbers[0], numbers[1]});

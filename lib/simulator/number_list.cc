@@ -12,13 +12,11 @@ std::vector<double> parseNumberList(const std::string& text, const std::string& 
   std::stringstream stream(text);
   std::string token;
   while (stream >> token) {
-    try {
-      size_t used = 0;
-      numbers.push_back(std::stod(token, &used));
-      if (used != token.size()) throw std::invalid_argument(token);
-    } catch (const std::exception&) {
-      throw ConfigError(what + ": '" + token + "' is not a number (in '" + text + "')");
+    double number = 0.0;
+    if (!parseFiniteDouble(token, number)) {
+      throw ConfigError(what + ": '" + token + "' is not a finite number (in '" + text + "')");
     }
+    numbers.push_back(number);
   }
   if (expected_count >= 0 && numbers.size() != static_cast<size_t>(expected_count)) {
     throw ConfigError(what + ": expected " + std::to_string(expected_count) + " numbers, got '" +

@@ -22,11 +22,8 @@ constexpr double kMinimumCosine = 0.15;
 
 SensorOptions loadSensorOptions(IniSection& section) {
   SensorOptions options;
-  options.noise_sigma = section.getDouble("noise_sigma", options.noise_sigma);
+  options.noise_sigma = section.getNonNegative("noise_sigma", options.noise_sigma, 255.0);
   options.seed = section.getInt("seed", options.seed);
-  if (options.noise_sigma < 0.0) {
-    throw ConfigError("[" + section.name() + "] noise_sigma: must be >= 0");
-  }
   return options;
 }
 

@@ -44,12 +44,12 @@ Velocity steerTowards(const mrpt::poses::CPose2D& pose, const std::vector<Point2
 
 SimulationOptions loadSimulationOptions(IniSection& section) {
   SimulationOptions options;
-  options.frame_rate_hz = section.getPositive("frame_rate_hz", options.frame_rate_hz);
-  options.control_rate_hz = section.getPositive("control_rate_hz", options.control_rate_hz);
-  options.cruise_speed_mps = section.getPositive("cruise_speed_mps", options.cruise_speed_mps);
-  options.waypoint_tolerance_m = section.getPositive("waypoint_tolerance_m", options.waypoint_tolerance_m);
-  options.heading_gain = section.getPositive("heading_gain", options.heading_gain);
-  options.max_duration_s = section.getPositive("max_duration_s", options.max_duration_s);
+  options.frame_rate_hz = section.getPositive("frame_rate_hz", options.frame_rate_hz, 1000.0);
+  options.control_rate_hz = section.getPositive("control_rate_hz", options.control_rate_hz, 10000.0);
+  options.cruise_speed_mps = section.getPositive("cruise_speed_mps", options.cruise_speed_mps, 100.0);
+  options.waypoint_tolerance_m = section.getPositive("waypoint_tolerance_m", options.waypoint_tolerance_m, 1000.0);
+  options.heading_gain = section.getPositive("heading_gain", options.heading_gain, 1000.0);
+  options.max_duration_s = section.getPositive("max_duration_s", options.max_duration_s, 86400.0);
   if (options.control_rate_hz < options.frame_rate_hz) {
     throw ConfigError("[" + section.name() + "] control_rate_hz: must be at least frame_rate_hz");
   }

@@ -3,10 +3,18 @@
 #include <algorithm>
 #include <cmath>
 
+#include "common/ini_section.h"
 #include "simulator/number_list.h"
 
 namespace stereonav {
 namespace {
+
+// Texture wavelengths and stripe periods, metres.
+constexpr double kMinWavelength = 1e-4;
+constexpr double kMaxWavelength = 1e4;
+// Noise lattice coordinates beyond this (far grazing views, or no hit at all) read as flat
+// texture: truncation to int32 would overflow there.
+constexpr double kMaxLatticeCoordinate = 1e9;
 
 uint32_t hashLattice(int32_t x, int32_t y, uint32_t seed) {
   // Integer avalanche mix: neighbouring lattice points get unrelated values.
@@ -82,6 +90,7 @@ double stripes(const SurfaceTexture& texture, double u, double v, double footpri
 double valueNoise(double x, double y, uint32_t seed) {
   // Truncation corrected for negative values: std::floor is a library call on baseline x86-64,
   // and this runs several times per pixel.
+  if (!(std::abs(x) < kMaxLatticeCoordinate && std::abs(y) < kMaxLatticeCoordinate)) return 0.0;
   int32_t ix = static_cast<int32_t>(x);
   int32_t iy = static_cast<int32_t>(y);
   ix -= x < ix;
@@ -133,13 +142,13 @@ SurfaceTexture loadSurfaceTexture(IniSection& section) {
   } else {
     throw ConfigError(where("type") + ": expected noise, paint, stripes or poster, got '" + type + "'");
   }
-  texture.mean = section.getDouble("mean", texture.mean);
-  texture.contrast = section.getDouble("contrast", texture.contrast);
+  texture.mean = section.getDouble("mean", texture.mean, 0.0, 1.0);
+  texture.contrast = section.getDouble("contrast", texture.contrast, 0.0, 1.0);
   if (section.has("scales_m")) {
     texture.scales_m = parseNumberList(section.getString("scales_m", ""), where("scales_m"));
   }
-  texture.period_m = section.getDouble("period_m", texture.period_m);
-  texture.duty = section.getDouble("duty", texture.duty);
+  texture.period_m = section.getPositive("period_m", texture.period_m, kMaxWavelength);
+  texture.duty = section.getDouble("duty", texture.duty, 0.0, 1.0);
   const std::string orientation = section.getString("orientation", "vertical");
   if (orientation != "vertical" && orientation != "horizontal") {
     throw ConfigError(where("orientation") + ": expected vertical or horizontal, got '" +
@@ -160,7 +169,12 @@ SurfaceTexture loadSurfaceTexture(IniSection& section) {
   }
   if (texture.scales_m.empty()) throw ConfigError(where("scales_m") + ": needs at least one wavelength");
   for (double scale : texture.scales_m) {
-    if (scale <= 0.0) throw ConfigError(where("scales_m") + ": wavelengths must be positive");
+    // Bounded below so that world coordinates (metres) over a wavelength stay well inside the
+    // noise lattice's integer range.
+    if (!(scale >= kMinWavelength && scale <= kMaxWavelength)) {
+      throw ConfigError(where("scales_m") + ": wavelengths must be in " +
+                        describeRange(kMinWavelength, kMaxWavelength) + " m");
+    }
   }
   if (texture.period_m <= 0.0) throw ConfigError(where("period_m") + ": must be positive");
   if (texture.duty <= 0.0 || texture.duty >= 1.0) throw ConfigError(where("duty") + ": must be in (0, 1)");

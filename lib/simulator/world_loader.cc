@@ -4,6 +4,7 @@
 #include <mrpt/core/bits_math.h>
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <map>
 
@@ -104,26 +105,49 @@ class WorldBuilder {
     return known->second;
   }
 
+  // Lengths, heights and coordinates are bounded by [world] max_extent_m, which bounds every
+  // size derived from the world (ground-truth maps, texture lookups, fence pickets).
   double positive(IniSection& section, const std::string& key, double default_value) {
-    const double value = section.getDouble(key, default_value);
-    if (!(value > 0.0)) fail(section, key, "must be positive");
+    const double value = section.getPositive(key, default_value);
+    checkExtent(section, key, value);
     return value;
   }
 
   double nonNegative(IniSection& section, const std::string& key, double default_value) {
-    const double value = section.getDouble(key, default_value);
-    if (!(value >= 0.0)) fail(section, key, "must be >= 0");
+    const double value = section.getNonNegative(key, default_value);
+    checkExtent(section, key, value);
     return value;
+  }
+
+  double degrees(IniSection& section, const std::string& key) {
+    return mrpt::DEG2RAD(section.getDouble(key, 0.0, -3600.0, 3600.0));
+  }
+
+  void checkExtent(const IniSection& section, const std::string& key, double value) const {
+    if (!(std::abs(value) <= max_extent_m_)) {
+      char why[160];
+      std::snprintf(why, sizeof why, "%g is beyond [world] max_extent_m = %g m (raise it for a larger world)",
+                    value, max_extent_m_);
+      fail(section, key, why);
+    }
   }
 
   std::vector<double> numbers(IniSection& section, const std::string& key, int count) {
     if (!section.has(key)) fail(section, key, "missing");
-    return parseNumberList(section.getString(key, ""), where(section, key), count);
+    const auto values = parseNumberList(section.getString(key, ""), where(section, key), count);
+    for (double value : values) checkExtent(section, key, value);
+    return values;
   }
 
   std::vector<Point2> points(IniSection& section, const std::string& key, size_t minimum) {
     if (!section.has(key)) fail(section, key, "missing");
-    return parsePointList(section.getString(key, ""), where(section, key), minimum);
+    const auto list = parsePointList(section.getString(key, ""), where(section, key), minimum);
+    if (list.size() > kMaxPoints) fail(section, key, "more than " + std::to_string(kMaxPoints) + " points");
+    for (const Point2& point : list) {
+      checkExtent(section, key, point.x);
+      checkExtent(section, key, point.y);
+    }
+    return list;
   }
 
   void addSolid(const Solid& solid, bool identical_texture = false) {
@@ -132,6 +156,7 @@ class WorldBuilder {
   }
 
   void loadWorldSection(IniSection& section) {
+    max_extent_m_ = section.getDouble("max_extent_m", max_extent_m_, 1.0, 1e6);
     if (section.has("bounds")) {
       const auto b = numbers(section, "bounds", 4);
       if (b[2] <= b[0] || b[3] <= b[1]) fail(section, "bounds", "expected x_min y_min x_max y_max");
@@ -139,7 +164,9 @@ class WorldBuilder {
       explicit_bounds_ = true;
     }
     if (section.has("start_pose")) {
-      const auto pose = numbers(section, "start_pose", 3);
+      const auto pose = parseNumberList(section.getString("start_pose", ""), where(section, "start_pose"), 3);
+      checkExtent(section, "start_pose", pose[0]);
+      checkExtent(section, "start_pose", pose[1]);
       world_.start_pose[0] = pose[0];
       world_.start_pose[1] = pose[1];
       world_.start_pose[2] = mrpt::DEG2RAD(pose[2]);
@@ -156,11 +183,8 @@ class WorldBuilder {
     }
     world_.ceiling_height = nonNegative(section, "ceiling_height", 0.0);
     world_.ceiling_texture = textureOf(section, "ceiling");
-    world_.lighting_change = section.getDouble("lighting_change", 0.0);
-    if (world_.lighting_change < 0.0 || world_.lighting_change >= 1.0) {
-      fail(section, "lighting_change", "must be in [0, 1)");
-    }
-    world_.lighting_period_s = positive(section, "lighting_period_s", world_.lighting_period_s);
+    world_.lighting_change = section.getDouble("lighting_change", 0.0, 0.0, 0.999);
+    world_.lighting_period_s = section.getPositive("lighting_period_s", world_.lighting_period_s, 1e6);
     section.rejectUnknownKeys();
   }
 
@@ -186,7 +210,7 @@ class WorldBuilder {
     const auto center = numbers(section, "center", 2);
     const auto size = numbers(section, "size", 2);
     if (!(size[0] > 0.0 && size[1] > 0.0)) fail(section, "size", "must be positive");
-    const double yaw = mrpt::DEG2RAD(section.getDouble("yaw_deg", 0.0));
+    const double yaw = degrees(section, "yaw_deg");
     const double z = nonNegative(section, "z", 0.0);
     const double height = positive(section, "height", 1.0);
     addSolid(Solid::box(center[0], center[1], size[0], size[1], yaw, z, z + height,
@@ -208,7 +232,7 @@ class WorldBuilder {
     const auto center = numbers(section, "center", 2);
     const auto size = numbers(section, "size", 2);
     if (!(size[0] > 0.0 && size[1] > 0.0)) fail(section, "size", "must be positive");
-    const double yaw = mrpt::DEG2RAD(section.getDouble("yaw_deg", 0.0));
+    const double yaw = degrees(section, "yaw_deg");
     const double height = positive(section, "height", 0.72);
     const double top_thickness = positive(section, "top_thickness", 0.03);
     const double leg_radius = positive(section, "leg_radius", 0.02);
@@ -252,7 +276,11 @@ class WorldBuilder {
     const double ux = (to[0] - from[0]) / length;
     const double uy = (to[1] - from[1]) / length;
     const double yaw = std::atan2(uy, ux);
-    const int pickets = static_cast<int>(std::floor((length + gap) / (width + gap)));
+    const double picket_count = std::floor((length + gap) / (width + gap));
+    if (picket_count > kMaxPoints) {
+      fail(section, "picket_width", "more than " + std::to_string(kMaxPoints) + " pickets; widen them or the gap");
+    }
+    const int pickets = static_cast<int>(picket_count);
     for (int i = 0; i < pickets; ++i) {
       const double s = width / 2 + i * (width + gap);
       addSolid(Solid::box(from[0] + ux * s, from[1] + uy * s, width, thickness, yaw, 0.0, height, texture),
@@ -283,7 +311,7 @@ class WorldBuilder {
       const auto size = numbers(section, "size", 2);
       if (!(size[0] > 0.0 && size[1] > 0.0)) fail(section, "size", "must be positive");
       obstacle.solid = Solid::box(start.x, start.y, size[0], size[1],
-                                  mrpt::DEG2RAD(section.getDouble("yaw_deg", 0.0)), 0.0, height, texture);
+                                  degrees(section, "yaw_deg"), 0.0, height, texture);
     } else if (shape == "cylinder") {
       obstacle.solid = Solid::cylinder(start.x, start.y, positive(section, "radius", 0.25), 0.0, height, texture);
     } else {
@@ -323,6 +351,9 @@ class WorldBuilder {
   std::map<std::string, int> texture_index_;
   std::vector<bool> identical_texture_;
   double wall_thickness_ = 0.1;
+  double max_extent_m_ = 1000.0;
+  // Bound on the points of one list and the pickets of one fence.
+  static constexpr size_t kMaxPoints = 10000;
   bool explicit_bounds_ = false;
 };
 

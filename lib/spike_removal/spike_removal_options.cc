@@ -43,12 +43,12 @@ SpikeRemovalOptions loadSpikeRemovalOptions(IniSection& section) {
 
   auto& segmentation = options.segmentation;
   segmentation.max_difference = static_cast<float>(
-      section.getDouble("max_difference", segmentation.max_difference));
+      section.getDouble("max_difference", segmentation.max_difference, 0.0, 1e4));
   segmentation.min_region_pixels =
-      section.getInt("min_region_pixels", segmentation.min_region_pixels);
+      section.getInt("min_region_pixels", segmentation.min_region_pixels, 1, 1 << 24);
   segmentation.connectivity = section.getInt("connectivity", segmentation.connectivity);
   options.median_kernel = section.getInt("median_kernel", options.median_kernel);
-  options.erosion_kernel = section.getInt("erosion_kernel", options.erosion_kernel);
+  options.erosion_kernel = section.getInt("erosion_kernel", options.erosion_kernel, 3, 255);
 
   if (!(segmentation.max_difference >= 0.0f)) fail("max_difference", "must be >= 0");
   if (segmentation.min_region_pixels < 1) fail("min_region_pixels", "must be >= 1");

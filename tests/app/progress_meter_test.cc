@@ -45,5 +45,11 @@ TEST(SigintStopRequestTest, FirstSigintOnlyRaisesTheFlag) {
   EXPECT_TRUE(stop.requested());
 }
 
+TEST(SigintStopRequestTest, SigtermIsHandledLikeSigint) {
+  SigintStopRequest stop;
+  std::raise(SIGTERM);  // what service managers and ROS send; would end the test binary too
+  EXPECT_TRUE(stop.requested());
+}
+
 }  // namespace
 }  // namespace stereonav

@@ -39,7 +39,7 @@ TEST(ProjectionOptionsTest, SurfaceBandIsOffByDefaultAndNotNegative) {
     loadProjectionOptions(section);
     FAIL() << "expected ConfigError";
   } catch (const ConfigError& error) {
-    EXPECT_STREQ(error.what(), "[projection] surface_band_px: must not be negative");
+    EXPECT_STREQ(error.what(), "[projection] surface_band_px: expected [0, 10000], got '-0.5'");
   }
 }
 

@@ -46,9 +46,60 @@ TEST(IniSectionTest, SignChecksNameTheKey) {
     section.getPositive("radius_m", 1.0);
     FAIL() << "zero accepted as positive";
   } catch (const ConfigError& error) {
-    EXPECT_STREQ(error.what(), "[robot] radius_m: must be positive");
+    EXPECT_STREQ(error.what(), "[robot] radius_m: must be positive, got '0'");
   }
   EXPECT_THROW(section.getNonNegative("margin_m", 0.0), ConfigError);
+}
+
+TEST(IniSectionTest, WholeValueMustBeOneFiniteNumber) {
+  // B15: "1,5" used to be read as 1.
+  for (const char* bad : {"1,5", "0.1abc", "0.1 0.2", "nan", "NaN", "inf", "-inf", "1e999", "0x", "", "--1"}) {
+    mrpt::config::CConfigFileMemory config(std::string("[grid]\nresolution = ") + bad + "\n");
+    IniSection section(config, "grid");
+    EXPECT_THROW(section.getDouble("resolution", 0.05), ConfigError) << "'" << bad << "'";
+  }
+  mrpt::config::CConfigFileMemory config("[grid]\nresolution = 1.5e-1\n");
+  IniSection section(config, "grid");
+  EXPECT_DOUBLE_EQ(section.getDouble("resolution", 0.05), 0.15);
+}
+
+TEST(IniSectionTest, RangeErrorNamesSectionKeyRangeAndValue) {
+  mrpt::config::CConfigFileMemory config("[grid]\nresolution = 1e-7\nmax_cells = 99999999999\nwindow = 7\n");
+  IniSection section(config, "grid");
+  try {
+    section.getDouble("resolution", 0.05, 1e-3, 100.0);
+    FAIL() << "out of range accepted";
+  } catch (const ConfigError& error) {
+    EXPECT_STREQ(error.what(), "[grid] resolution: expected [0.001, 100], got '1e-7'");
+  }
+  try {
+    section.getInt("max_cells", 1, 1, 1000);
+    FAIL() << "an integer beyond int accepted";
+  } catch (const ConfigError& error) {
+    EXPECT_STREQ(error.what(), "[grid] max_cells: expected an integer in 1..1000, got '99999999999'");
+  }
+  EXPECT_EQ(section.getInt("window", 3, 3, 7), 7);  // bounds are inclusive
+  EXPECT_THROW(section.getInt("window", 3, 3, 6), ConfigError);
+}
+
+TEST(IniSectionTest, DefaultsAreNotRangeChecked) {
+  mrpt::config::CConfigFileMemory config("[grid]\n");
+  IniSection section(config, "grid");
+  EXPECT_DOUBLE_EQ(section.getDouble("resolution", 0.05, 1.0, 2.0), 0.05);
+}
+
+TEST(ParseNumberTest, StrictParsers) {
+  double value = 0.0;
+  EXPECT_TRUE(parseFiniteDouble(" -2.5 ", value));
+  EXPECT_DOUBLE_EQ(value, -2.5);
+  EXPECT_FALSE(parseFiniteDouble("1e-400", value));  // underflows to a value nobody wrote
+  long long integer = 0;
+  EXPECT_TRUE(parseInteger("-42", integer));
+  EXPECT_EQ(integer, -42);
+  EXPECT_FALSE(parseInteger("4.0", integer));
+  EXPECT_FALSE(parseInteger("99999999999999999999", integer));
+  EXPECT_EQ(describeRange(0.0, std::numeric_limits<double>::max()), "at least 0");
+  EXPECT_EQ(describeRange(-1.0, 1.0), "[-1, 1]");
 }
 
 TEST(LoadIniSectionTest, RejectsKeysTheLoaderDidNotRead) {

@@ -215,14 +215,14 @@ TEST_F(DisparityCommandTest, MalformedCameraIsRejected) {
 }
 
 TEST_F(DisparityCommandTest, MaxDisparityMustBePositiveAndBelowTheWidth) {
-  expectError(runBinocular("--out " + path("out.pfm") + " --max-disp 0"), 2, "--max-disp 0: must be positive");
+  expectError(runBinocular("--out " + path("out.pfm") + " --max-disp 0"), 2, "--max-disp: expected an integer in 1..4096, got '0'");
   expectError(runBinocular("--out " + path("out.pfm") + " --max-disp 384"), 2,
               "--max-disp 384: must be smaller than the image width 384");
 }
 
 TEST_F(DisparityCommandTest, WindowMustBeOddAndAtLeastThree) {
-  expectError(runBinocular("--out " + path("out.pfm") + " --window 6"), 2, "--window 6: must be odd and >= 3");
-  expectError(runBinocular("--out " + path("out.pfm") + " --window 1"), 2, "--window 1: must be odd and >= 3");
+  expectError(runBinocular("--out " + path("out.pfm") + " --window 6"), 2, "--window 6: must be odd");
+  expectError(runBinocular("--out " + path("out.pfm") + " --window 1"), 2, "--window: expected an integer in 3..255, got '1'");
 }
 
 TEST_F(DisparityCommandTest, UnknownIniKeyIsNamedWithTheNearestKnownKey) {

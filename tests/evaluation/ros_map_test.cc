@@ -88,7 +88,7 @@ TEST_F(RosMapTest, BadInputNamesTheFileAndTheKey) {
     return std::string("no error");
   };
   EXPECT_NE(message("image: map.pgm\norigin: [0, 0, 0]\n").find("missing key 'resolution'"), std::string::npos);
-  EXPECT_NE(message("image: map.pgm\nresolution: fine\norigin: [0, 0, 0]\n").find("resolution: not a number"),
+  EXPECT_NE(message("image: map.pgm\nresolution: fine\norigin: [0, 0, 0]\n").find("resolution: expected a number in"),
             std::string::npos);
   EXPECT_NE(message("image: map.pgm\nresolution: 1\norigin: [0, 0, 0.5]\n").find("rotated"), std::string::npos);
   EXPECT_NE(message("image: map.pgm\nresolution: 1\norigin: [0, 0, 0]\nmode: raw\n").find("mode"),

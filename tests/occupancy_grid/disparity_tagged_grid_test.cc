@@ -66,6 +66,32 @@ TEST(DisparityTaggedGridTest, GrowsByWholeCellsKeepingCellsAtTheirWorldCoordinat
   EXPECT_EQ(grid.height(), 13);
 }
 
+TEST(DisparityTaggedGridTest, GrowthStopsAtMaxCells) {
+  GridLimits bounded = limits(-1, 1, -1, 1, 0.5);  // 4 x 4 cells
+  bounded.max_cells = 64;
+  DisparityTaggedGrid grid(bounded, OccupancyScale{});
+  // Asks for 8 m (16 cells) on the right and 1e300 m up: both scaled down by one factor until
+  // the grid has at most 64 cells.
+  grid.growToInclude({-1.0, 9.0, -1.0, 1e300}, 0.0);
+  EXPECT_TRUE(grid.reachedCellLimit());
+  EXPECT_LE(static_cast<long>(grid.width()) * grid.height(), 64);
+  EXPECT_GE(grid.width(), 4);
+  EXPECT_GT(grid.height(), 4);  // it grew as far as it could
+  EXPECT_DOUBLE_EQ(grid.minX(), -1.0);
+  EXPECT_DOUBLE_EQ(grid.minY(), -1.0);
+
+  DisparityTaggedGrid unbounded(limits(-1, 1, -1, 1, 0.5), OccupancyScale{});
+  unbounded.growToInclude({-1.0, 9.0, -1.0, 1.0}, 0.0);
+  EXPECT_FALSE(unbounded.reachedCellLimit());
+  EXPECT_EQ(unbounded.width(), 20);
+}
+
+TEST(DisparityTaggedGridTest, InitialGridBeyondMaxCellsIsRefused) {
+  GridLimits too_big = limits(-10, 10, -10, 10, 0.5);  // 40 x 40 cells
+  too_big.max_cells = 1000;
+  EXPECT_THROW(DisparityTaggedGrid(too_big, OccupancyScale{}), std::invalid_argument);
+}
+
 TEST(DisparityTaggedGridTest, InsertingFarOutsideTheBoundsGrowsTheGrid) {
   using testing::occupancyAt;
   using testing::robotAt;

@@ -30,7 +30,7 @@ TEST(SensorModelOptionsTest, LoadsKeysAndRejectsBadValues) {
     loadSensorModelOptions(bad_uncertainty);
     FAIL() << "disparity_uncertainty_px = 0 accepted";
   } catch (const ConfigError& e) {
-    EXPECT_STREQ(e.what(), "[bad_uncertainty] disparity_uncertainty_px: must be positive");
+    EXPECT_STREQ(e.what(), "[bad_uncertainty] disparity_uncertainty_px: must be positive (at most 1000), got '0'");
   }
 }
 
