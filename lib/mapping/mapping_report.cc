@@ -37,7 +37,7 @@ std::string jsonNumber(double value) {
 
 constexpr const char* kRejectReasonKeys[kRejectReasonCount] = {
     "missing_calibration", "wrong_image_format", "not_rectified", "missing_image",
-    "wrong_camera_count"};
+    "wrong_camera_count", "missing_partner"};
 
 }  // namespace
 
