@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <opencv2/core/persistence.hpp>
 #include <set>
 
@@ -33,10 +34,14 @@ class CalibrationNodes {
  public:
   explicit CalibrationNodes(const std::vector<std::string>& paths) : paths_(paths) {
     for (const std::string& path : paths_) {
-      if (!std::ifstream(path)) throw RectificationError(path + ": cannot read calibration file");
+      std::ifstream file(path);
+      if (!file) throw RectificationError(path + ": cannot read calibration file");
+      std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+      // OpenCV wants its "%YAML:1.0" header, which ROS camera_info files do not have.
+      if (text.rfind("%YAML", 0) != 0 && text.rfind("<?xml", 0) != 0) text = "%YAML:1.0\n" + text;
       cv::FileStorage storage;
       try {
-        storage.open(path, cv::FileStorage::READ);
+        storage.open(text, cv::FileStorage::READ | cv::FileStorage::MEMORY);
       } catch (const cv::Exception& e) {
         throw RectificationError(path + ": not an OpenCV YAML/XML calibration (" + e.err + ")");
       }
