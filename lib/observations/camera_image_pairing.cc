@@ -106,12 +106,13 @@ void CameraImagePairer::decide(bool at_end) {
         const double difference = std::abs(seconds(queue[i]->timestamp) - t);
         if (difference <= best) best = difference, chosen[label] = i, found = true;
       }
+      // Until an image past the window arrives, a closer one may still come.
+      const bool passed = !queue.empty() && seconds(queue.back()->timestamp) > t + tolerance;
+      if (!passed && !at_end) waiting = true;
       if (found) {
         capture.images.push_back(queue[chosen[label]]);
         continue;
       }
-      const bool passed = !queue.empty() && seconds(queue.back()->timestamp) > t + tolerance;
-      if (!passed && !at_end) waiting = true;
       if (capture.missing.empty()) {
         capture.missing = options_.labels[0] + " image at " + timeText(reference->timestamp) +
                           " s: no " + options_.labels[label] + " image within " +

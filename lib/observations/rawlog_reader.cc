@@ -152,6 +152,7 @@ void RawlogReader::collect(const mrpt::obs::CObservation::Ptr& observation) {
   } else if (auto odometry =
                  std::dynamic_pointer_cast<mrpt::obs::CObservationOdometry>(observation)) {
     pending_odometry_ = odometry->odometry;
+    if (pairer_) odometry_history_.emplace_back(odometry->timestamp, odometry->odometry);
   }
 }
 
@@ -162,6 +163,7 @@ void RawlogReader::integrateMovement(const mrpt::obs::CActionCollection& actions
             std::dynamic_pointer_cast<mrpt::obs::CActionRobotMovement2D>(action.get_ptr())) {
       integrated_movement_ = integrated_movement_ + movement->poseChange->getMeanVal();
       pending_odometry_ = integrated_movement_;
+      if (pairer_) odometry_history_.emplace_back(movement->timestamp, integrated_movement_);
     }
   }
 }
@@ -226,8 +228,12 @@ RigFrame RawlogReader::finishFrame(RigFrame frame, const std::string& label) {
     options_.expected_rig = frame.rig;
   }
   if (pairer_) {
-    frame.odometry = pending_odometry_;
-    pending_odometry_.reset();
+    const auto latest = frame.timestamp + std::chrono::microseconds(static_cast<int64_t>(
+                                              options_.pairing.max_time_difference_s * 1e6));
+    while (!odometry_history_.empty() && odometry_history_.front().first <= latest) {
+      frame.odometry = odometry_history_.front().second;
+      odometry_history_.pop_front();
+    }
   }
   return frame;
 }

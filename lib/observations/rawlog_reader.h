@@ -8,6 +8,8 @@
 
 #include <array>
 #include <cstdint>
+#include <deque>
+#include <utility>
 #include <optional>
 #include <string>
 #include <vector>
@@ -114,6 +116,9 @@ class RawlogReader {
   // the odometry.
   std::vector<mrpt::obs::CObservationImage::Ptr> pending_images_;
   std::optional<mrpt::poses::CPose2D> pending_odometry_;
+  // Paired captures are decided after later images (and odometry) have arrived: the odometry
+  // recorded since the last frame, by time, to give each the pose of its own instant.
+  std::deque<std::pair<mrpt::system::TTimeStamp, mrpt::poses::CPose2D>> odometry_history_;
   mrpt::poses::CPose2D integrated_movement_;  // sum of CActionRobotMovement2D so far
 };
 
