@@ -12,5 +12,7 @@ int runSimulateCommand(const std::vector<std::string>& arguments);
 int runMapCommand(const std::vector<std::string>& arguments);
 int runExploreCommand(const std::vector<std::string>& arguments);
 int runScoreCommand(const std::vector<std::string>& arguments);
+int runConvertCommand(const std::vector<std::string>& arguments);
+int runCalibrateCommand(const std::vector<std::string>& arguments);
 
 }  // namespace stereonav::app

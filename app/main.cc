@@ -25,6 +25,10 @@ const Command kCommands[] = {
      stereonav::app::runExploreCommand},
     {"score", "score an occupancy map (ROS map_server YAML) against a ground-truth map",
      stereonav::app::runScoreCommand},
+    {"calibrate", "calibrate a stereo pair from chessboard image pairs (OpenCV YAML out)",
+     stereonav::app::runCalibrateCommand},
+    {"convert", "convert a EuRoC or KITTI stereo dataset into a rawlog",
+     stereonav::app::runConvertCommand},
 };
 
 void printUsage(std::ostream& out) {
