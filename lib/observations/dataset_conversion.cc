@@ -23,31 +23,6 @@ cv::Mat readGrey(const std::string& path) {
   return image;
 }
 
-mrpt::img::TCamera toTCamera(const CameraCalibration& camera, const std::string& name) {
-  mrpt::img::TCamera t;
-  t.ncols = static_cast<uint32_t>(camera.size.width);
-  t.nrows = static_cast<uint32_t>(camera.size.height);
-  const cv::Matx33d& K = camera.camera_matrix;
-  t.setIntrinsicParamsFromValues(K(0, 0), K(1, 1), K(0, 2), K(1, 2));
-  std::vector<double> d = camera.distortion;
-  d.resize(5, 0.0);
-  t.setDistortionPlumbBob(d[0], d[1], d[2], d[3], d[4]);
-  t.cameraName = name;
-  return t;
-}
-
-// The right camera's optical frame in the left one's (what rightCameraPose holds).
-mrpt::poses::CPose3D poseInReference(const CameraCalibration& camera) {
-  const cv::Matx33d to_reference = camera.rotation.t();
-  const cv::Vec3d centre = camera.centreInReference();
-  mrpt::math::CMatrixDouble33 rotation;
-  for (int r = 0; r < 3; ++r) {
-    for (int c = 0; c < 3; ++c) rotation(r, c) = to_reference(r, c);
-  }
-  return mrpt::poses::CPose3D(rotation,
-                              mrpt::math::CVectorFixedDouble<3>({centre[0], centre[1], centre[2]}));
-}
-
 std::vector<double> numbersOf(const std::string& line) {
   std::istringstream fields(line);
   std::vector<double> numbers;
@@ -75,8 +50,8 @@ size_t convertEuroc(const std::string& dataset, RawlogWriter& writer,
   const std::string index_path = dataset + "/cam0/data.csv";
   std::ifstream index(index_path);
   if (!index) throw std::runtime_error(index_path + ": cannot read");
-  const auto left_camera = toTCamera(calibration.cameras[0], "EUROC_CAM0");
-  const auto right_camera = toTCamera(calibration.cameras[1], "EUROC_CAM1");
+  const auto left_camera = tcameraOf(calibration.cameras[0], "EUROC_CAM0");
+  const auto right_camera = tcameraOf(calibration.cameras[1], "EUROC_CAM1");
   const mrpt::poses::CPose3DQuat right_pose(poseInReference(calibration.cameras[1]));
   const mrpt::poses::CPose3DQuat mount(CameraRig::opticalPoseOnRobot(0, 0, 1.0, 0, 0));
   size_t frames = 0;

@@ -258,6 +258,30 @@ void placeCamera(CameraCalibration& camera, const mrpt::poses::CPose3D& pose) {
   camera.translation = -(rotation.t() * cv::Vec3d(pose.x(), pose.y(), pose.z()));
 }
 
+mrpt::img::TCamera tcameraOf(const CameraCalibration& camera, const std::string& name) {
+  mrpt::img::TCamera t;
+  t.ncols = static_cast<uint32_t>(camera.size.width);
+  t.nrows = static_cast<uint32_t>(camera.size.height);
+  const cv::Matx33d& K = camera.camera_matrix;
+  t.setIntrinsicParamsFromValues(K(0, 0), K(1, 1), K(0, 2), K(1, 2));
+  std::vector<double> d = camera.distortion;
+  d.resize(5, 0.0);
+  t.setDistortionPlumbBob(d[0], d[1], d[2], d[3], d[4]);
+  t.cameraName = name;
+  return t;
+}
+
+mrpt::poses::CPose3D poseInReference(const CameraCalibration& camera) {
+  const cv::Matx33d to_reference = camera.rotation.t();
+  const cv::Vec3d centre = camera.centreInReference();
+  mrpt::math::CMatrixDouble33 rotation;
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c) rotation(r, c) = to_reference(r, c);
+  }
+  return mrpt::poses::CPose3D(rotation,
+                              mrpt::math::CVectorFixedDouble<3>({centre[0], centre[1], centre[2]}));
+}
+
 RigCalibration loadRigCalibration(const std::vector<std::string>& paths) {
   if (paths.empty()) throw RectificationError("no calibration file given");
   RigCalibration calibration;

@@ -46,4 +46,9 @@ CameraCalibration cameraCalibrationOf(const mrpt::img::TCamera& camera);
 // MRPT poses relative to each other give).
 void placeCamera(CameraCalibration& camera, const mrpt::poses::CPose3D& pose);
 
+// The other way: MRPT's camera model (plumb_bob with the first five coefficients), named `name`,
+// and the camera's optical frame in the reference camera's (e.g. a pair's rightCameraPose).
+mrpt::img::TCamera tcameraOf(const CameraCalibration& camera, const std::string& name);
+mrpt::poses::CPose3D poseInReference(const CameraCalibration& camera);
+
 }  // namespace stereonav
