@@ -37,6 +37,10 @@ const Command kCommands[] = {
      stereonav::app::runConfigCommand},
     {"import-kitti", "convert a KITTI odometry sequence into a rawlog with odometry and true poses",
      stereonav::app::runImportKittiCommand},
+    {"calibrate", "calibrate a stereo pair from chessboard image pairs (OpenCV YAML out)",
+     stereonav::app::runCalibrateCommand},
+    {"convert", "convert a EuRoC or KITTI stereo dataset into a rawlog",
+     stereonav::app::runConvertCommand},
 };
 
 // Full details (MRPT backtraces, OpenCV's own log) only with --verbose, which any command takes.

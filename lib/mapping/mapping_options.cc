@@ -3,9 +3,12 @@
 #include <mrpt/config/CConfigFile.h>
 
 #include <fstream>
+#include <iterator>
+#include <sstream>
 #include <stdexcept>
 
 #include "observations/rawlog_writer.h"
+#include "rectification/calibration_files.h"
 
 namespace stereonav {
 namespace {
@@ -28,6 +31,16 @@ MappingOptions loadMappingOptions(const mrpt::config::CConfigFileBase& config) {
     const RawlogWriterOptions writer = loadRawlogWriterOptions(rawlog);
     if (follow_named_pair) options.sensor_label = writer.sensor_label;
     options.calibration_tolerance = loadCalibrationTolerance(rawlog);
+    options.pairing = loadImagePairingOptions(rawlog);
+    std::istringstream calibration_files(rawlog.getString("calibration", ""));
+    const std::vector<std::string> paths{std::istream_iterator<std::string>(calibration_files), {}};
+    if (!paths.empty()) {
+      try {
+        options.calibration = loadRigCalibration(paths);
+      } catch (const RectificationError& error) {
+        throw ConfigError("[rawlog] calibration: " + std::string(error.what()));
+      }
+    }
     rawlog.rejectUnknownKeys();
   }
   options.stereo = loadIniSection(config, "stereo", loadStereoOptions);

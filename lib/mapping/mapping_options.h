@@ -8,7 +8,9 @@
 #include "column_projection/projection_options.h"
 #include "disparity/stereo_options.h"
 #include "localization/localization_options.h"
+#include "observations/camera_image_pairing.h"
 #include "observations/camera_rig_merge.h"
+#include "rectification/rig_calibration.h"
 #include "occupancy_grid/grid_map_factory.h"
 #include "rig/camera_rig.h"
 #include "spike_removal/spike_removal_options.h"
@@ -26,8 +28,11 @@ struct MapperOptions {
 
 // Everything the mapping pipeline is configured with, read from one ini file:
 //   [rig]            optional; the ini's calibration overrides the rawlog's (camera_rig_merge.h)
-//   [rawlog]         sensor_label to follow ("" or absent: the first stereo pair found) and the
-//                    calibration tolerances; the writer's keys are accepted, as the simulator
+//   [rawlog]         sensor_label to follow ("" or absent: the first stereo pair found), the
+//                    calibration tolerances, camera_labels + pairing_tolerance_s for cameras
+//                    recorded as separate images (camera_image_pairing.h), and calibration: a
+//                    calibration file (or several, space-separated; calibration_files.h) that
+//                    replaces the recorded one; the writer's keys are accepted, as the simulator
 //                    writes them in the same section
 //   [stereo]         disparity engine (paper section 2.2)
 //   [spike_removal]  section 4.2
@@ -40,6 +45,8 @@ struct MappingOptions {
   std::optional<CameraRig> rig;
   std::string sensor_label;
   CalibrationTolerance calibration_tolerance;
+  ImagePairingOptions pairing;
+  std::optional<RigCalibration> calibration;
   StereoOptions stereo;
   SpikeRemovalOptions spike_removal;
   ProjectionOptions projection;

@@ -9,7 +9,7 @@ namespace {
 
 constexpr const char* kRejectReasonKeys[kRejectReasonCount] = {
     "missing_calibration", "wrong_image_format", "not_rectified", "missing_image",
-    "wrong_camera_count"};
+    "wrong_camera_count", "missing_partner"};
 
 }  // namespace
 

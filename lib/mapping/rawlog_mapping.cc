@@ -34,6 +34,8 @@ RawlogReaderOptions rawlogReaderOptions(const MappingOptions& options) {
   RawlogReaderOptions reader;
   reader.sensor_label = options.sensor_label;
   reader.expected_rig = options.rig;
+  reader.pairing = options.pairing;
+  reader.calibration = options.calibration;
   return reader;
 }
 

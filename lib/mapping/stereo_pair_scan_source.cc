@@ -9,7 +9,9 @@ namespace stereonav {
 
 StereoPairScanSource::StereoPairScanSource(const MappingOptions& options,
                                            std::string images_directory)
-    : options_(options), images_directory_(std::move(images_directory)) {
+    : options_(options),
+      images_directory_(std::move(images_directory)),
+      rectifier_(options.calibration) {
   if (options_.rig) options_.rig->secondaries.resize(1);
 }
 
@@ -22,7 +24,7 @@ CObservationDisparityScan::Ptr StereoPairScanSource::toDisparityScan(
   const PairReference unnamed_reference =
       options_.rig && options_.rig->secondaries.front().bx < 0.0 ? PairReference::kRight
                                                                  : PairReference::kLeft;
-  const RigFrame frame = fromRigObservations(*pair, {}, images_directory_, unnamed_reference);
+  const RigFrame frame = fromRigObservations(*pair, {}, images_directory_, unnamed_reference, rectifier_);
 
   std::lock_guard<std::mutex> lock(mutex_);
   if (!scanner_) {

@@ -1,6 +1,8 @@
 #pragma once
 
 #include <mutex>
+
+#include "observations/frame_rectifier.h"
 #include <optional>
 #include <string>
 
@@ -28,13 +30,14 @@ class StereoPairScanSource : public DisparityScanSource {
   explicit StereoPairScanSource(const MappingOptions& options, std::string images_directory = "");
 
   // nullptr for anything but a CObservationStereoImages. Throws ObservationRejected for a pair
-  // that is not a rectified rig and std::invalid_argument for one of another image size.
+  // that cannot be rectified (an unrectified one is rectified, frame_rectifier.h) and std::invalid_argument for one of another image size.
   CObservationDisparityScan::Ptr toDisparityScan(
       const mrpt::obs::CObservation& observation) const override;
 
  private:
   MappingOptions options_;
   std::string images_directory_;
+  mutable FrameRectifier rectifier_;
   // The map calls a const source; the scanner's buffers are its cache. Guarded so that maps
   // sharing a source may be updated from several threads.
   mutable std::mutex mutex_;

@@ -18,7 +18,7 @@ namespace {
 
 constexpr const char* kReasonNames[kRejectReasonCount] = {
     "without calibration", "wrong image format", "not rectified", "image missing",
-    "wrong number of cameras"};
+    "wrong number of cameras", "missing partner image"};
 
 // The camera index k of "<pair_label>_CAM<k>", or 0 if `label` is not of that form.
 size_t extraCameraIndex(const std::string& label, const std::string& pair_label) {
@@ -60,7 +60,9 @@ RawlogReader::RawlogReader(const std::string& path, RawlogReaderOptions options)
     : path_(path),
       images_directory_(findExternalImagesDirectory(path)),
       options_(std::move(options)),
-      archive_(stream_) {
+      archive_(stream_),
+      rectifier_(options_.calibration) {
+  if (!options_.pairing.labels.empty()) pairer_.emplace(options_.pairing);
   // CFileGZInputStream throws a multi-line MRPT report for a missing file; say it in one line.
   if (!std::filesystem::is_regular_file(path_))
     throw std::runtime_error(path_ + ": no such rawlog file");
@@ -75,6 +77,7 @@ RawlogReader::RawlogReader(const std::string& path, RawlogReaderOptions options)
 }
 
 std::optional<RigFrame> RawlogReader::next() {
+  if (auto frame = nextPairedFrame()) return frame;
   while (!finished_) {
     const uint64_t offset = stream_.getPosition();
     mrpt::serialization::CSerializable::Ptr object;
@@ -92,10 +95,28 @@ std::optional<RigFrame> RawlogReader::next() {
       const bool clean_end = dynamic_cast<const mrpt::serialization::CExceptionEOF*>(&e) &&
                              stream_.getPosition() == offset;
       if (!clean_end) damage_ = RawlogDamage{object_index_, offset, oneLineMessage(e.what())};
-      return std::nullopt;
+      if (pairer_) pairer_->finish();
+      return nextPairedFrame();
     }
     ++object_index_;
     if (auto frame = handleObject(object)) return frame;
+    if (auto frame = nextPairedFrame()) return frame;
+  }
+  return std::nullopt;
+}
+
+std::optional<RigFrame> RawlogReader::nextPairedFrame() {
+  if (!pairer_) return std::nullopt;
+  while (auto capture = pairer_->next()) {
+    try {
+      if (!capture->missing.empty()) {
+        throw ObservationRejected(RejectReason::kMissingPartner, capture->missing);
+      }
+      const std::string label = capture->images.front()->sensorLabel;
+      return finishFrame(fromCameraImages(capture->images, images_directory_, rectifier_), label);
+    } catch (const ObservationRejected& rejection) {
+      skip(rejection);
+    }
   }
   return std::nullopt;
 }
@@ -112,12 +133,12 @@ std::optional<RigFrame> RawlogReader::handleObject(
     for (const auto& observation : *sensory_frame) collect(observation);
     for (const auto& observation : *sensory_frame) {
       auto pair = std::dynamic_pointer_cast<mrpt::obs::CObservationStereoImages>(observation);
-      if (pair && !frame) frame = completeFrame(*pair);
+      if (pair && !frame && !pairer_) frame = completeFrame(*pair);
     }
     return frame;
   }
   if (auto pair = std::dynamic_pointer_cast<mrpt::obs::CObservationStereoImages>(object)) {
-    return completeFrame(*pair);
+    return pairer_ ? std::nullopt : completeFrame(*pair);
   }
   if (auto observation = std::dynamic_pointer_cast<mrpt::obs::CObservation>(object)) {
     collect(observation);
@@ -127,6 +148,10 @@ std::optional<RigFrame> RawlogReader::handleObject(
 
 void RawlogReader::collect(const mrpt::obs::CObservation::Ptr& observation) {
   if (auto image = std::dynamic_pointer_cast<mrpt::obs::CObservationImage>(observation)) {
+    if (pairer_) {
+      pairer_->add(image);
+      return;
+    }
     // A frame's cameras share its timestamp, so older ones can no longer be completed; dropping
     // them keeps memory bounded in logs full of other cameras' images.
     if (!pending_images_.empty() && pending_images_.front()->timestamp != image->timestamp) {
@@ -136,6 +161,7 @@ void RawlogReader::collect(const mrpt::obs::CObservation::Ptr& observation) {
   } else if (auto odometry =
                  std::dynamic_pointer_cast<mrpt::obs::CObservationOdometry>(observation)) {
     pending_odometry_ = odometry->odometry;
+    if (pairer_) odometry_history_.emplace_back(odometry->timestamp, odometry->odometry);
   }
 }
 
@@ -146,6 +172,7 @@ void RawlogReader::integrateMovement(const mrpt::obs::CActionCollection& actions
             std::dynamic_pointer_cast<mrpt::obs::CActionRobotMovement2D>(action.get_ptr())) {
       integrated_movement_ = integrated_movement_ + movement->poseChange->getMeanVal();
       pending_odometry_ = integrated_movement_;
+      if (pairer_) odometry_history_.emplace_back(movement->timestamp, integrated_movement_);
     }
   }
 }
@@ -179,32 +206,45 @@ std::optional<RigFrame> RawlogReader::completeFrame(
         expected && !expected->secondaries.empty() && expected->secondaries[0].bx < 0
             ? PairReference::kRight
             : PairReference::kLeft;
-    RigFrame frame = fromRigObservations(pair, extra_cameras, images_directory_, unnamed_reference);
-    if (expected) {
-      if (frame.rig.secondaries.size() != expected->secondaries.size()) {
-        throw ObservationRejected(
-            RejectReason::kWrongCameraCount,
-            pair.sensorLabel + ": " + std::to_string(frame.rig.secondaries.size() + 1) +
-                " cameras, expected " + std::to_string(expected->secondaries.size() + 1));
-      }
-      if (frame.rig.reference.width != expected->reference.width ||
-          frame.rig.reference.height != expected->reference.height) {
-        throw ObservationRejected(RejectReason::kWrongImageFormat,
-                                  pair.sensorLabel + ": images are " +
-                                      std::to_string(frame.rig.reference.width) + "x" +
-                                      std::to_string(frame.rig.reference.height) + ", expected " +
-                                      std::to_string(expected->reference.width) + "x" +
-                                      std::to_string(expected->reference.height));
-      }
-    } else {
-      options_.expected_rig = frame.rig;
-    }
+    RigFrame frame = fromRigObservations(pair, extra_cameras, images_directory_, unnamed_reference,
+                                         rectifier_);
     frame.odometry = odometry;
-    return frame;
+    return finishFrame(std::move(frame), pair.sensorLabel);
   } catch (const ObservationRejected& rejection) {
     skip(rejection);
     return std::nullopt;
   }
+}
+
+RigFrame RawlogReader::finishFrame(RigFrame frame, const std::string& label) {
+  const auto& expected = options_.expected_rig;
+  if (expected) {
+    if (frame.rig.secondaries.size() != expected->secondaries.size()) {
+      throw ObservationRejected(RejectReason::kWrongCameraCount,
+                                label + ": " + std::to_string(frame.rig.secondaries.size() + 1) +
+                                    " cameras, expected " +
+                                    std::to_string(expected->secondaries.size() + 1));
+    }
+    if (frame.rig.reference.width != expected->reference.width ||
+        frame.rig.reference.height != expected->reference.height) {
+      throw ObservationRejected(RejectReason::kWrongImageFormat,
+                                label + ": images are " + std::to_string(frame.rig.reference.width) +
+                                    "x" + std::to_string(frame.rig.reference.height) +
+                                    ", expected " + std::to_string(expected->reference.width) +
+                                    "x" + std::to_string(expected->reference.height));
+    }
+  } else {
+    options_.expected_rig = frame.rig;
+  }
+  if (pairer_) {
+    const auto latest = frame.timestamp + std::chrono::microseconds(static_cast<int64_t>(
+                                              options_.pairing.max_time_difference_s * 1e6));
+    while (!odometry_history_.empty() && odometry_history_.front().first <= latest) {
+      frame.odometry = odometry_history_.front().second;
+      odometry_history_.pop_front();
+    }
+  }
+  return frame;
 }
 
 void RawlogReader::skip(const ObservationRejected& rejection) {

@@ -8,10 +8,14 @@
 
 #include <array>
 #include <cstdint>
+#include <deque>
+#include <utility>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "observations/camera_image_pairing.h"
+#include "observations/frame_rectifier.h"
 #include "observations/rig_frame.h"
 #include "observations/rig_observations.h"
 
@@ -26,6 +30,12 @@ struct RawlogReaderOptions {
   // camera (rawlogs we did not write) its first secondary's side decides it. Without it the first
   // frame read sets the expectation and an unnamed pair's reference is its left camera.
   std::optional<CameraRig> expected_rig;
+  // With labels: the head is recorded as one CObservationImage per camera, grouped into frames by
+  // time (camera_image_pairing.h); CObservationStereoImages are then ignored.
+  ImagePairingOptions pairing;
+  // Replaces the calibration recorded in the observations (cameras in rig order; for a pair, left
+  // then right). Either way an unrectified head is rectified on the fly (frame_rectifier.h).
+  std::optional<RigCalibration> calibration;
 };
 
 // Where a damaged rawlog stopped being readable.
@@ -53,7 +63,8 @@ struct SkippedFrames {
 // that damage loses only what follows it.
 //
 // A frame is the extra cameras' CObservationImage (labelled <label>_CAM<k>, same timestamp)
-// followed by the pair's CObservationStereoImages, which completes it (rig_observations.h), with
+// followed by the pair's CObservationStereoImages, which completes it (rig_observations.h), or
+// the images of the options' pairing labels grouped by time, with
 // the odometry pose recorded since the previous frame: the latest CObservationOdometry, or the
 // movement actions before the CSensoryFrame integrated from the odometry origin.
 //
@@ -83,6 +94,10 @@ class RawlogReader {
   void integrateMovement(const mrpt::obs::CActionCollection& actions);
   // The frame completed by `pair`, if it is ours and usable.
   std::optional<RigFrame> completeFrame(const mrpt::obs::CObservationStereoImages& pair);
+  // The next paired capture that makes a usable frame, skipping (and counting) the others.
+  std::optional<RigFrame> nextPairedFrame();
+  // Checks a frame against the expected rig and gives it the odometry since the last frame.
+  RigFrame finishFrame(RigFrame frame, const std::string& label);
   void skip(const ObservationRejected& rejection);
 
   std::string path_;
@@ -95,11 +110,16 @@ class RawlogReader {
   bool finished_ = false;
   std::optional<RawlogDamage> damage_;
   SkippedFrames skipped_;
+  FrameRectifier rectifier_;
+  std::optional<CameraImagePairer> pairer_;
 
   // What has arrived since the last frame: the extra cameras of the newest timestamp seen, and
   // the odometry.
   std::vector<mrpt::obs::CObservationImage::Ptr> pending_images_;
   std::optional<mrpt::poses::CPose2D> pending_odometry_;
+  // Paired captures are decided after later images (and odometry) have arrived: the odometry
+  // recorded since the last frame, by time, to give each the pose of its own instant.
+  std::deque<std::pair<mrpt::system::TTimeStamp, mrpt::poses::CPose2D>> odometry_history_;
   mrpt::poses::CPose2D integrated_movement_;  // sum of CActionRobotMovement2D so far
 };
 

@@ -111,7 +111,13 @@ void RawlogWriter::writeObject(const mrpt::serialization::CSerializable& object)
 
 void RawlogWriter::write(const RigFrame& frame) {
   if (!stream_) throw std::logic_error(path_ + ": write() after finish()");
-  RigObservations observations = toRigObservations(frame, options_.sensor_label);
+  write(toRigObservations(frame, options_.sensor_label), frame.odometry);
+}
+
+void RawlogWriter::write(RigObservations observations,
+                         const std::optional<mrpt::poses::CPose2D>& odometry) {
+  if (!stream_) throw std::logic_error(path_ + ": write() after finish()");
+  const mrpt::system::TTimeStamp timestamp = observations.pair->timestamp;
   if (options_.image_storage == ImageStorage::kExternal) {
     const std::string number = frameNumber(frames_written_);
     auto& pair = *observations.pair;
@@ -127,23 +133,23 @@ void RawlogWriter::write(const RigFrame& frame) {
 
   // The pair goes last: it completes the frame for a streaming reader (see rawlog_reader.h).
   if (options_.layout == RawlogLayout::kObservations) {
-    if (frame.odometry) {
-      mrpt::obs::CObservationOdometry odometry;
-      odometry.timestamp = frame.timestamp;
-      odometry.sensorLabel = "ODOMETRY";
-      odometry.odometry = *frame.odometry;
-      writeObject(odometry);
+    if (odometry) {
+      mrpt::obs::CObservationOdometry recorded;
+      recorded.timestamp = timestamp;
+      recorded.sensorLabel = "ODOMETRY";
+      recorded.odometry = *odometry;
+      writeObject(recorded);
     }
     for (const auto& extra : observations.extra_cameras) writeObject(*extra);
     writeObject(*observations.pair);
   } else {
     mrpt::obs::CActionCollection actions;
-    if (frame.odometry) {
+    if (odometry) {
       mrpt::obs::CActionRobotMovement2D movement;
-      movement.timestamp = frame.timestamp;
-      movement.computeFromOdometry(*frame.odometry - last_odometry_, {});
+      movement.timestamp = timestamp;
+      movement.computeFromOdometry(*odometry - last_odometry_, {});
       actions.insert(movement);
-      last_odometry_ = *frame.odometry;
+      last_odometry_ = *odometry;
     }
     mrpt::obs::CSensoryFrame observations_frame;
     for (const auto& extra : observations.extra_cameras) observations_frame.insert(extra);

@@ -4,10 +4,12 @@
 #include <mrpt/poses/CPose2D.h>
 
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "common/ini_section.h"
 #include "observations/rig_frame.h"
+#include "observations/rig_observations.h"
 
 namespace stereonav {
 
@@ -59,11 +61,17 @@ class RawlogWriter {
   // then) and std::runtime_error on I/O failure.
   void write(const RigFrame& frame);
 
+  // Writes observations as recorded, e.g. a raw pair with its lens calibration from a dataset
+  // converter, with the odometry of their instant if there is one. Throws std::runtime_error on
+  // I/O failure.
+  void write(RigObservations observations, const std::optional<mrpt::poses::CPose2D>& odometry);
+
   // Closes the rawlog and moves it into place. This is the path for saving partial work, e.g.
   // after Ctrl-C. Later calls do nothing; write() after finish() throws std::logic_error.
   void finish();
 
   size_t framesWritten() const { return frames_written_; }
+  const std::string& sensorLabel() const { return options_.sensor_label; }
 
  private:
   void writeObject(const mrpt::serialization::CSerializable& object);

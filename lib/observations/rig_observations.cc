@@ -6,18 +6,24 @@
 #include <cmath>
 
 #include "observations/external_images.h"
+#include "rectification/calibration_files.h"
 
 namespace stereonav {
 namespace {
 
 using mrpt::img::CImage;
 using mrpt::img::TCamera;
+
+// A calibration within physical sense (rig/camera_rig.h), checked on the rig the frame will be
+// matched with, so a damaged or extreme recorded calibration cannot reach the matcher's sizes.
+RigFrame checkedPlausible(RigFrame frame, const std::string& label) {
+  if (const std::string problem = implausibleRig(frame.rig); !problem.empty()) {
+    throw ObservationRejected(RejectReason::kMissingCalibration, label + ": implausible calibration: " + problem);
+  }
+  return frame;
+}
 using mrpt::poses::CPose3D;
 using mrpt::poses::CPose3DQuat;
-
-// Poses pass through quaternions in CObservationStereoImages; anything closer than this is the
-// same rectified geometry.
-constexpr double kGeometryTolerance = 1e-6;
 
 TCamera toTCamera(const PinholeCamera& camera, const std::string& name) {
   TCamera t;
@@ -46,23 +52,19 @@ void requireCalibration(const TCamera& camera, const std::string& which) {
   }
 }
 
-// All cameras of a rectified rig share the reference's pinhole intrinsics and have no distortion.
-void requireRectifiedLike(const TCamera& camera, const TCamera& reference,
-                          const std::string& which) {
-  bool distorted = false;
-  for (const double k : camera.dist) distorted = distorted || k != 0.0;
-  const auto near = [](double a, double b) { return std::abs(a - b) <= kGeometryTolerance; };
-  if (distorted || !near(camera.fx(), camera.fy()) || !near(camera.fx(), reference.fx()) ||
-      !near(camera.cx(), reference.cx()) || !near(camera.cy(), reference.cy()) ||
-      camera.ncols != reference.ncols || camera.nrows != reference.nrows) {
+// `camera` at `pose` (its optical frame, in the reference camera's optical frame).
+CameraCalibration placedCamera(const TCamera& camera, const CPose3D& pose, const std::string& which) {
+  try {
+    CameraCalibration calibration = cameraCalibrationOf(camera);
+    placeCamera(calibration, pose);
+    return calibration;
+  } catch (const RectificationError& e) {
     throw ObservationRejected(RejectReason::kNotRectified,
-                              which +
-                                  ": not a rectified camera (distortion, non-square pixels or "
-                                  "intrinsics differing from the reference camera)");
+                              which + ": cannot be rectified: " + e.what());
   }
 }
 
-cv::Mat loadImage(const CImage& image, const TCamera& camera, const std::string& images_directory,
+cv::Mat loadImage(const CImage& image, const std::string& images_directory,
                   const std::string& which) {
   cv::Mat pixels = imagePixels(image, images_directory);
   if (pixels.empty()) {
@@ -73,30 +75,7 @@ cv::Mat loadImage(const CImage& image, const TCamera& camera, const std::string&
                                         : std::string("empty embedded image")) +
             ")");
   }
-  if (pixels.cols != static_cast<int>(camera.ncols) ||
-      pixels.rows != static_cast<int>(camera.nrows)) {
-    throw ObservationRejected(
-        RejectReason::kWrongImageFormat,
-        which + ": image is " + std::to_string(pixels.cols) + "x" + std::to_string(pixels.rows) +
-            ", its camera is " + std::to_string(camera.ncols) + "x" + std::to_string(camera.nrows));
-  }
   return pixels;
-}
-
-// Offset of `camera_pose` from `reference_pose` in the reference optical frame; rejects a camera
-// that is rotated or moved along the optical axis (not coplanar, paper section 2.1).
-mrpt::math::TPoint3D coplanarOffset(const CPose3D& reference_pose, const CPose3D& camera_pose,
-                                    const std::string& which) {
-  const CPose3D relative = camera_pose - reference_pose;
-  const bool aligned = std::abs(relative.yaw()) <= kGeometryTolerance &&
-                       std::abs(relative.pitch()) <= kGeometryTolerance &&
-                       std::abs(relative.roll()) <= kGeometryTolerance &&
-                       std::abs(relative.z()) <= kGeometryTolerance;
-  if (!aligned) {
-    throw ObservationRejected(RejectReason::kNotRectified,
-                              which + ": camera not coplanar with and parallel to the reference");
-  }
-  return relative.translation();
 }
 
 }  // namespace
@@ -148,73 +127,68 @@ RigObservations toRigObservations(const RigFrame& frame, const std::string& pair
 
 RigFrame fromRigObservations(const mrpt::obs::CObservationStereoImages& pair,
                              const std::vector<mrpt::obs::CObservationImage::Ptr>& extra_cameras,
-                             const std::string& images_directory, PairReference unnamed_reference) {
+                             const std::string& images_directory, PairReference unnamed_reference,
+                             FrameRectifier& rectifier) {
   const std::string& label = pair.sensorLabel;
-  requireCalibration(pair.leftCamera, label + " left camera");
-  requireCalibration(pair.rightCamera, label + " right camera");
   if (!pair.hasImageRight) {
     throw ObservationRejected(RejectReason::kWrongCameraCount, label + ": no right image");
   }
-  const double baseline = CPose3D(pair.rightCameraPose).translation().norm();
-  if (!(baseline > 0)) {
-    throw ObservationRejected(RejectReason::kMissingCalibration, label + ": zero stereo baseline");
+  const bool recorded_calibration = !rectifier.hasCalibrationFile();
+  if (recorded_calibration) {
+    requireCalibration(pair.leftCamera, label + " left camera");
+    requireCalibration(pair.rightCamera, label + " right camera");
+    if (!(CPose3D(pair.rightCameraPose).translation().norm() > 0)) {
+      throw ObservationRejected(RejectReason::kMissingCalibration, label + ": zero stereo baseline");
+    }
   }
 
   bool reference_is_left = unnamed_reference == PairReference::kLeft;
   if (endsWith(pair.leftCamera.cameraName, "_CAM0")) reference_is_left = true;
   if (endsWith(pair.rightCamera.cameraName, "_CAM0")) reference_is_left = false;
-  const TCamera& reference = reference_is_left ? pair.leftCamera : pair.rightCamera;
-  requireRectifiedLike(pair.leftCamera, reference, label + " left camera");
-  requireRectifiedLike(pair.rightCamera, reference, label + " right camera");
 
   const CPose3D left_pose(pair.cameraPose);
   const CPose3D right_pose = left_pose + CPose3D(pair.rightCameraPose);
-  const auto right_offset = coplanarOffset(left_pose, right_pose, label + " right camera");
-  if (std::abs(right_offset.y) > kGeometryTolerance || !(right_offset.x > 0)) {
-    throw ObservationRejected(RejectReason::kNotRectified,
-                              label + ": right camera not on the left camera's +x axis");
+  RigCalibration recorded;
+  recorded.reference_pose_on_robot = reference_is_left ? left_pose : right_pose;
+  std::vector<cv::Mat> images{
+      loadImage(pair.imageLeft, images_directory, label + " left"),
+      loadImage(pair.imageRight, images_directory, label + " right")};
+  if (recorded_calibration) {
+    recorded.cameras = {placedCamera(pair.leftCamera, CPose3D(), label + " left camera"),
+                        placedCamera(pair.rightCamera, CPose3D(pair.rightCameraPose),
+                                     label + " right camera")};
+    if (!reference_is_left) recorded = withReference(recorded, 1);
   }
-
-  RigFrame frame;
-  frame.timestamp = pair.timestamp;
-  CameraRig& rig = frame.rig;
-  rig.reference.width = static_cast<int>(reference.ncols);
-  rig.reference.height = static_cast<int>(reference.nrows);
-  rig.reference.focal_px = reference.fx();
-  rig.reference.cx = reference.cx();
-  rig.reference.cy = reference.cy();
-  rig.baseline_m = baseline;
-  rig.pose_on_robot = reference_is_left ? left_pose : right_pose;
-  rig.secondaries = {SecondaryCamera{reference_is_left ? 1.0 : -1.0, 0.0}};
-  if (const std::string problem = implausibleRig(rig); !problem.empty()) {
-    throw ObservationRejected(RejectReason::kMissingCalibration, label + ": implausible calibration: " + problem);
-  }
-
-  const cv::Mat left =
-      loadImage(pair.imageLeft, pair.leftCamera, images_directory, label + " left");
-  const cv::Mat right =
-      loadImage(pair.imageRight, pair.rightCamera, images_directory, label + " right");
-  frame.reference = reference_is_left ? left : right;
-  frame.secondaries = {reference_is_left ? right : left};
+  if (!reference_is_left) std::swap(images[0], images[1]);
 
   for (const auto& extra : extra_cameras) {
     const std::string& which = extra->sensorLabel;
-    requireCalibration(extra->cameraParams, which);
-    requireRectifiedLike(extra->cameraParams, reference, which);
-    const auto offset = coplanarOffset(rig.pose_on_robot, extra->cameraPose, which);
-    rig.secondaries.push_back({offset.x / baseline, offset.y / baseline});
-    if (const std::string problem = implausibleRig(rig); !problem.empty()) {
-      throw ObservationRejected(RejectReason::kMissingCalibration, which + ": implausible calibration: " + problem);
+    if (recorded_calibration) {
+      requireCalibration(extra->cameraParams, which);
+      recorded.cameras.push_back(placedCamera(
+          extra->cameraParams, extra->cameraPose - recorded.reference_pose_on_robot, which));
     }
-    frame.secondaries.push_back(
-        loadImage(extra->image, extra->cameraParams, images_directory, which));
+    images.push_back(loadImage(extra->image, images_directory, which));
   }
-  try {
-    checkRigFrame(frame);
-  } catch (const std::invalid_argument& e) {
-    throw ObservationRejected(RejectReason::kWrongImageFormat, label + ": " + e.what());
+  return checkedPlausible(rectifier.frame(recorded, images, pair.timestamp, label, reference_is_left ? 0 : 1), label);
+}
+
+RigFrame fromCameraImages(const std::vector<mrpt::obs::CObservationImage::Ptr>& cameras,
+                          const std::string& images_directory, FrameRectifier& rectifier) {
+  const std::string label = cameras.at(0)->sensorLabel;
+  RigCalibration recorded;
+  recorded.reference_pose_on_robot = cameras[0]->cameraPose;
+  std::vector<cv::Mat> images;
+  for (const auto& camera : cameras) {
+    const std::string& which = camera->sensorLabel;
+    if (!rectifier.hasCalibrationFile()) {
+      requireCalibration(camera->cameraParams, which);
+      recorded.cameras.push_back(placedCamera(
+          camera->cameraParams, camera->cameraPose - recorded.reference_pose_on_robot, which));
+    }
+    images.push_back(loadImage(camera->image, images_directory, which));
   }
-  return frame;
+  return checkedPlausible(rectifier.frame(recorded, images, cameras[0]->timestamp, label), label);
 }
 
 }  // namespace stereonav

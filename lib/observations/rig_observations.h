@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "observations/frame_rectifier.h"
 #include "observations/rig_frame.h"
 
 namespace stereonav {
@@ -27,8 +28,9 @@ namespace stereonav {
 //    pose on the robot and its intrinsics.
 //  - Each TCamera::cameraName is <label>_CAM<k> as well, which is how a reader tells whether the
 //    reference is the left or the right camera of the pair.
-//  - All cameras carry the reference intrinsics and no distortion: the images are rectified
-//    (paper section 2.1).
+//  - What we write carries the reference intrinsics and no distortion: the images are rectified
+//    (paper section 2.1). What we read may be raw: cameras with distortion, different intrinsics
+//    or rotated relative to each other are rectified on the fly (frame_rectifier.h).
 struct RigObservations {
   mrpt::obs::CObservationStereoImages::Ptr pair;
   std::vector<mrpt::obs::CObservationImage::Ptr> extra_cameras;  // cameras 2, 3, ...
@@ -46,11 +48,12 @@ RigObservations toRigObservations(const RigFrame& frame, const std::string& pair
 enum class RejectReason {
   kMissingCalibration,  // a camera without focal length or image size, or a zero baseline
   kWrongImageFormat,    // an image whose size differs from its camera's, or not 8-bit grey/BGR
-  kNotRectified,        // lens distortion, cameras with different intrinsics or orientations
+  kNotRectified,        // a calibration no rectification can use (the message says why)
   kMissingImage,        // an externally stored image whose file cannot be read
   kWrongCameraCount,    // not the number of cameras the caller expects
+  kMissingPartner,      // a separately recorded camera image with no partner close enough in time
 };
-constexpr size_t kRejectReasonCount = 5;
+constexpr size_t kRejectReasonCount = 6;
 
 class ObservationRejected : public std::runtime_error {
  public:
@@ -66,12 +69,21 @@ class ObservationRejected : public std::runtime_error {
 // we did not write).
 enum class PairReference { kLeft, kRight };
 
-// Rebuilds a RigFrame from a stereo pair and the extra cameras 2, 3, ... in camera order: the rig
-// from the cameras' intrinsics and poses (B = the pair's baseline, so the first secondary comes
-// back at bx = +-1), the images loaded (externally stored ones from `images_directory`). Throws
-// ObservationRejected if they do not describe a rectified rig with images of its size.
+// Rebuilds a RigFrame from a stereo pair and the extra cameras 2, 3, ... in camera order: the
+// calibration from the cameras' intrinsics, distortion and poses (or the rectifier's calibration
+// file), the images loaded (externally stored ones from `images_directory`) and rectified unless
+// they are already (then B = the pair's baseline, so the first secondary comes back at bx = +-1).
+// Throws ObservationRejected if they lack a calibration, cannot be rectified (saying why) or do
+// not match it.
 RigFrame fromRigObservations(const mrpt::obs::CObservationStereoImages& pair,
                              const std::vector<mrpt::obs::CObservationImage::Ptr>& extra_cameras,
-                             const std::string& images_directory, PairReference unnamed_reference);
+                             const std::string& images_directory, PairReference unnamed_reference,
+                             FrameRectifier& rectifier);
+
+// The same for one capture recorded as one CObservationImage per camera (rawlog-grabber with
+// several cameras, rosbag2rawlog), reference first: intrinsics from each cameraParams, the
+// cameras' relative poses from their cameraPose on the robot.
+RigFrame fromCameraImages(const std::vector<mrpt::obs::CObservationImage::Ptr>& cameras,
+                          const std::string& images_directory, FrameRectifier& rectifier);
 
 }  // namespace stereonav

@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <unistd.h>
 
 #include "support/options_loading.h"
 
@@ -56,6 +57,25 @@ TEST(MappingOptionsTest, UnknownKeysAreRejectedInEverySection) {
     EXPECT_NE(message.find("no_such_key"), std::string::npos) << message;
   }
   EXPECT_NE(errorOf("[mapping]\npanel_range_m = 0\n").find("panel_range_m"), std::string::npos);
+}
+
+TEST(MappingOptionsTest, RawlogSectionNamesSeparateCamerasAndACalibrationFile) {
+  const std::string path =
+      (std::filesystem::temp_directory_path() / ("mapping_options_calib_" + std::to_string(::getpid()) + ".yaml")).string();
+  std::ofstream(path) << "%YAML:1.0\nM1: [400, 0, 320, 0, 400, 240, 0, 0, 1]\nD1: [-0.1, 0, 0, 0]\n"
+                         "M2: [400, 0, 320, 0, 400, 240, 0, 0, 1]\nD2: [0, 0, 0, 0]\n"
+                         "R: [1, 0, 0, 0, 1, 0, 0, 0, 1]\nT: [-0.12, 0, 0]\n";
+  const MappingOptions options =
+      load("[rawlog]\ncamera_labels = LEFT RIGHT\npairing_tolerance_s = 0.01\ncalibration = " + path + "\n");
+  EXPECT_EQ(options.pairing.labels, (std::vector<std::string>{"LEFT", "RIGHT"}));
+  EXPECT_DOUBLE_EQ(options.pairing.max_time_difference_s, 0.01);
+  ASSERT_TRUE(options.calibration.has_value());
+  EXPECT_DOUBLE_EQ(options.calibration->cameras[1].centreInReference()[0], 0.12);
+  EXPECT_DOUBLE_EQ(options.calibration->cameras[0].distortion[0], -0.1);
+  std::filesystem::remove(path);
+  const std::string missing = errorOf("[rawlog]\ncalibration = /nonexistent/calib.yaml\n");
+  EXPECT_NE(missing.find("[rawlog] calibration: /nonexistent/calib.yaml: cannot read"), std::string::npos)
+      << missing;
 }
 
 TEST(MappingOptionsTest, FileErrorsNameTheFile) {

@@ -216,7 +216,7 @@ TEST(RawlogReaderTest, UnusableFramesAreSkippedAndCounted) {
       auto pair = toRigObservations(frames[i], "TRICLOPS").pair;
       if (i == 1) pair->leftCamera.intrinsicParams.setZero();             // no calibration
       if (i == 2) pair->leftCamera.ncols = pair->rightCamera.ncols = 80;  // images not 80 wide
-      if (i == 3) pair->rightCamera.ncols = 80;  // and the rig disagrees with itself
+      if (i == 3) pair->rightCamera.setDistortionKannalaBrandt(0.1, 0, 0, 0);  // fisheye lens
       archive << *pair;
     }
   }
@@ -238,7 +238,9 @@ TEST(RawlogReaderTest, UnusableFramesAreSkippedAndCounted) {
   const std::string summary = result.skipped.summary();
   EXPECT_NE(summary.find("skipped 3 "), std::string::npos) << summary;
   EXPECT_NE(summary.find("1 without calibration"), std::string::npos) << summary;
-  EXPECT_NE(summary.find("image is 64x48, its camera is 80x48"), std::string::npos) << summary;
+  EXPECT_NE(summary.find("image is 64x48, its calibration is for 80x48"), std::string::npos)
+      << summary;
+  EXPECT_NE(summary.find("fisheye"), std::string::npos) << summary;
 }
 
 TEST(RawlogReaderTest, FramesNotMatchingTheExpectedRigAreSkipped) {

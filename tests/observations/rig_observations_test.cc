@@ -100,8 +100,9 @@ TEST(RigObservationsTest, ConvertsBackToTheSameFrame) {
     RigFrame frame = sampleFrames(rig, 1)[0];
     frame.odometry.reset();  // odometry travels in its own observation
     const auto observations = toRigObservations(frame, "TRICLOPS");
+    FrameRectifier rectifier;
     expectSameFrame(frame, fromRigObservations(*observations.pair, observations.extra_cameras, "",
-                                               PairReference::kLeft));
+                                               PairReference::kLeft, rectifier));
   }
 }
 
@@ -110,23 +111,51 @@ TEST(RigObservationsTest, UnnamedPairTakesTheReferenceSideFromTheCaller) {
   auto observations = toRigObservations(frame, "TRICLOPS");
   observations.pair->leftCamera.cameraName = "left";
   observations.pair->rightCamera.cameraName = "right";
-  const RigFrame as_right = fromRigObservations(*observations.pair, {}, "", PairReference::kRight);
+  FrameRectifier rectifier;
+  const RigFrame as_right =
+      fromRigObservations(*observations.pair, {}, "", PairReference::kRight, rectifier);
   EXPECT_DOUBLE_EQ(as_right.rig.secondaries[0].bx, -1.0);
   EXPECT_TRUE(samePixels(as_right.reference, frame.reference));
-  const RigFrame as_left = fromRigObservations(*observations.pair, {}, "", PairReference::kLeft);
+  const RigFrame as_left =
+      fromRigObservations(*observations.pair, {}, "", PairReference::kLeft, rectifier);
   EXPECT_DOUBLE_EQ(as_left.rig.secondaries[0].bx, 1.0);
   EXPECT_TRUE(samePixels(as_left.reference, frame.secondaries[0]));
 }
 
 RejectReason rejectionOf(const RigObservations& observations, const std::string& images = "") {
   try {
+    FrameRectifier rectifier;
     fromRigObservations(*observations.pair, observations.extra_cameras, images,
-                        PairReference::kLeft);
+                        PairReference::kLeft, rectifier);
   } catch (const ObservationRejected& rejection) {
     return rejection.reason();
   }
   ADD_FAILURE() << "not rejected";
   return RejectReason::kWrongCameraCount;
+}
+
+TEST(RigObservationsTest, RectifiesACameraTurnedAboutItsOpticalAxis) {
+  // The top camera rolled by 0.05 rad: the centres still span the reference's image plane and
+  // the roll leaves every camera's centre ray where it was, so the rectified rig is the original
+  // one, the reference image is resampled through an identity map, and only the top image turns.
+  const RigFrame frame = sampleFrames(triclopsRig(), 1)[0];
+  auto observations = toRigObservations(frame, "TRICLOPS");
+  auto& top = *observations.extra_cameras[0];
+  top.cameraPose = top.cameraPose + CPose3D(0, 0, 0, 0.05, 0, 0);
+  FrameRectifier rectifier;
+  const RigFrame rectified = fromRigObservations(*observations.pair, observations.extra_cameras,
+                                                 "", PairReference::kLeft, rectifier);
+  ASSERT_EQ(rectified.rig.secondaries.size(), 2u);
+  EXPECT_NEAR(rectified.rig.reference.focal_px, frame.rig.reference.focal_px, 1e-9);
+  EXPECT_NEAR(rectified.rig.reference.cx, frame.rig.reference.cx, 1e-6);
+  EXPECT_NEAR(rectified.rig.reference.cy, frame.rig.reference.cy, 1e-6);
+  EXPECT_NEAR(rectified.rig.secondaries[0].bx, -1.0, 1e-6);
+  EXPECT_NEAR(rectified.rig.secondaries[0].by, 0.0, 1e-6);
+  EXPECT_NEAR(rectified.rig.secondaries[1].bx, 0.0, 1e-6);
+  EXPECT_NEAR(rectified.rig.secondaries[1].by, -1.0, 1e-6);
+  EXPECT_TRUE(rectified.rig.pose_on_robot.distanceTo(frame.rig.pose_on_robot) < 1e-6);
+  EXPECT_TRUE(samePixels(rectified.reference, frame.reference));
+  EXPECT_FALSE(samePixels(rectified.secondaries[1], frame.secondaries[1]));
 }
 
 TEST(RigObservationsTest, RejectsWhatIsNotARectifiedRigWithImagesOfItsSize) {
@@ -141,14 +170,22 @@ TEST(RigObservationsTest, RejectsWhatIsNotARectifiedRigWithImagesOfItsSize) {
   zero_baseline.pair->rightCameraPose = mrpt::poses::CPose3DQuat();
   EXPECT_EQ(rejectionOf(zero_baseline), RejectReason::kMissingCalibration);
 
-  auto distorted = fresh();
-  distorted.pair->leftCamera.setDistortionPlumbBob(-0.2, 0.05, 0, 0);
-  EXPECT_EQ(rejectionOf(distorted), RejectReason::kNotRectified);
+  auto fisheye = fresh();
+  fisheye.pair->leftCamera.setDistortionKannalaBrandt(0.1, 0.01, 0, 0);
+  EXPECT_EQ(rejectionOf(fisheye), RejectReason::kNotRectified);
 
-  auto turned = fresh();
-  turned.extra_cameras[0]->cameraPose =
-      turned.extra_cameras[0]->cameraPose + CPose3D(0, 0, 0, 0.05, 0, 0);
-  EXPECT_EQ(rejectionOf(turned), RejectReason::kNotRectified);
+  auto looking_sideways = fresh();  // no common image plane sees what it sees
+  looking_sideways.extra_cameras[0]->cameraPose =
+      looking_sideways.extra_cameras[0]->cameraPose + CPose3D(0, 0, 0, 0, 1.2, 0);
+  EXPECT_EQ(rejectionOf(looking_sideways), RejectReason::kNotRectified);
+
+  // The top camera moved onto the horizontal baseline: rectified as it is (a collinear rig),
+  // but with lens distortion no plane through the centres is defined to rectify it onto.
+  auto collinear = fresh();
+  collinear.extra_cameras[0]->cameraPose = CPose3D(collinear.pair->cameraPose) +
+                                           CPose3D(-0.1, 0, 0, 0, 0, 0);
+  collinear.pair->leftCamera.setDistortionPlumbBob(-0.2, 0.05, 0, 0);
+  EXPECT_EQ(rejectionOf(collinear), RejectReason::kNotRectified);
 
   auto small_image = fresh();
   small_image.pair->imageLeft =
