@@ -46,7 +46,7 @@ int runReportCommand(const std::vector<std::string>& arguments) {
   const std::string explore_prefix = command_line.required("explore");
   const std::string rawlog_path = command_line.required("rawlog");
   const std::string out = command_line.required("out");
-  const int panels = command_line.intValue("panels").value_or(4);
+  const int panels = command_line.intValue("panels", 0, 100).value_or(4);
   command_line.rejectUnknown();
   if (panels < 0) throw UsageError("--panels: must not be negative");
 
