@@ -90,6 +90,115 @@ void printEvaluation(const std::string& name, const DisparityEvaluation& result)
   std::cout << line;
 }
 
+// What the command line asks for, checked for consistency before any file is read.
+struct DisparityRequest {
+  std::string config_path, reference_path, out_path;
+  std::vector<std::string> cameras;
+  std::optional<int> max_disparity, window, border;
+  bool subpixel = false, spike_removal = false;
+  std::optional<std::string> backend, ground_truth_path, nonoccluded_path, discontinuity_path, colour_path;
+  std::optional<double> ground_truth_scale;
+};
+
+DisparityRequest parseRequest(CommandLine& command_line) {
+  DisparityRequest request;
+  request.config_path = command_line.required("config");
+  request.reference_path = command_line.required("ref");
+  request.cameras = command_line.values("cam");
+  request.out_path = command_line.required("out");
+  request.max_disparity = command_line.intValue("max-disp", 1, kMaxDisparity);
+  request.window = command_line.intValue("window", 3, kMaxWindow);
+  request.subpixel = command_line.flag("subpixel");
+  request.backend = command_line.value("backend");
+  request.ground_truth_path = command_line.value("gt");
+  request.ground_truth_scale = command_line.doubleValue("gt-scale", 1e-6, 1e6);
+  request.nonoccluded_path = command_line.value("gt-nonocc");
+  request.discontinuity_path = command_line.value("gt-disc");
+  request.border = command_line.intValue("gt-border", 0, 10000);
+  request.spike_removal = command_line.flag("spike-removal");
+  request.colour_path = command_line.value("colour");
+  command_line.rejectUnknown();
+
+  if (request.cameras.empty()) throw UsageError("--cam is required (at least one secondary view)");
+  if (!endsWith(request.out_path, ".pfm") && !endsWith(request.out_path, ".png")) {
+    throw UsageError("--out '" + request.out_path + "': must end in .pfm or .png");
+  }
+  if (request.colour_path && !endsWith(*request.colour_path, ".png")) {
+    throw UsageError("--colour '" + *request.colour_path + "': must end in .png");
+  }
+  if (request.ground_truth_path.has_value() != request.ground_truth_scale.has_value()) {
+    throw UsageError("--gt and --gt-scale go together");
+  }
+  if (!request.ground_truth_path && (request.nonoccluded_path || request.discontinuity_path || request.border)) {
+    throw UsageError("--gt-nonocc, --gt-disc and --gt-border need --gt");
+  }
+  if (request.window && *request.window % 2 == 0) {
+    throw UsageError("--window " + std::to_string(*request.window) + ": must be odd");
+  }
+  return request;
+}
+
+// The ini's [stereo] section with the command line's values over it.
+StereoOptions loadOptions(const DisparityRequest& request, const mrpt::config::CConfigFile& config) {
+  StereoOptions options = loadIniSection(config, "stereo", loadStereoOptions, request.config_path);
+  if (request.max_disparity) options.max_disparity = *request.max_disparity;
+  if (request.window) options.window = *request.window;
+  if (request.subpixel) options.subpixel = true;
+  if (request.backend) {
+    try {
+      options.backend = parseStereoBackend(*request.backend, "--backend");
+    } catch (const ConfigError& error) {
+      throw UsageError(error.what());
+    }
+  }
+  return options;
+}
+
+std::string sizeText(const cv::Mat& image) { return std::to_string(image.cols) + "x" + std::to_string(image.rows); }
+
+StereoFrame loadFrame(const DisparityRequest& request) {
+  StereoFrame frame;
+  frame.reference = readGreyImage(request.reference_path);
+  for (const std::string& camera : request.cameras) {
+    frame.secondaries.push_back(parseCamera(camera));
+    const cv::Mat1b& image = frame.secondaries.back().image;
+    if (image.size() != frame.reference.size()) {
+      throw std::runtime_error(camera.substr(0, camera.rfind(':', camera.rfind(':') - 1)) + ": image is " +
+                               sizeText(image) + ", the reference " + request.reference_path + " is " +
+                               sizeText(frame.reference));
+    }
+  }
+  return frame;
+}
+
+struct GroundTruth {
+  cv::Mat1f disparity;
+  cv::Mat1b nonoccluded, discontinuities;
+};
+
+GroundTruth loadGroundTruth(const DisparityRequest& request, const StereoFrame& frame) {
+  GroundTruth truth;
+  truth.disparity = loadMiddleburyGroundTruth(*request.ground_truth_path, *request.ground_truth_scale);
+  if (truth.disparity.size() != frame.reference.size()) {
+    throw std::runtime_error(*request.ground_truth_path + ": ground truth is " + sizeText(truth.disparity) +
+                             ", the reference " + request.reference_path + " is " + sizeText(frame.reference));
+  }
+  truth.nonoccluded = request.nonoccluded_path ? loadMaskFor(*request.nonoccluded_path, truth.disparity)
+                                               : nonOccludedMask(truth.disparity, frame.secondaries.front().camera);
+  if (request.discontinuity_path) truth.discontinuities = loadMaskFor(*request.discontinuity_path, truth.disparity);
+  return truth;
+}
+
+void printEvaluations(const DisparityRequest& request, const cv::Mat1f& disparity, const GroundTruth& truth) {
+  const int ignored_border = request.border.value_or(18);
+  printEvaluation("all", evaluateDisparity(disparity, truth.disparity, ignored_border));
+  printEvaluation(request.nonoccluded_path ? "nonocc" : "nonocc (derived from the ground truth)",
+                  evaluateDisparity(disparity, truth.disparity, ignored_border, truth.nonoccluded));
+  if (request.discontinuity_path) {
+    printEvaluation("disc", evaluateDisparity(disparity, truth.disparity, ignored_border, truth.discontinuities));
+  }
+}
+
 }  // namespace
 
 int runDisparityCommand(const std::vector<std::string>& arguments) {
@@ -98,105 +207,35 @@ int runDisparityCommand(const std::vector<std::string>& arguments) {
     std::cout << kUsage;
     return 0;
   }
-  const std::string config_path = command_line.required("config");
-  const std::string reference_path = command_line.required("ref");
-  const std::vector<std::string> cameras = command_line.values("cam");
-  const std::string out_path = command_line.required("out");
-  const auto max_disparity = command_line.intValue("max-disp", 1, kMaxDisparity);
-  const auto window = command_line.intValue("window", 3, kMaxWindow);
-  const bool subpixel = command_line.flag("subpixel");
-  const auto backend = command_line.value("backend");
-  const auto ground_truth_path = command_line.value("gt");
-  const auto ground_truth_scale = command_line.doubleValue("gt-scale", 1e-6, 1e6);
-  const auto nonoccluded_path = command_line.value("gt-nonocc");
-  const auto discontinuity_path = command_line.value("gt-disc");
-  const auto border = command_line.intValue("gt-border", 0, 10000);
-  const bool spike_removal = command_line.flag("spike-removal");
-  const auto colour_path = command_line.value("colour");
-  command_line.rejectUnknown();
-
-  if (cameras.empty()) throw UsageError("--cam is required (at least one secondary view)");
-  if (!endsWith(out_path, ".pfm") && !endsWith(out_path, ".png")) {
-    throw UsageError("--out '" + out_path + "': must end in .pfm or .png");
-  }
-  if (colour_path && !endsWith(*colour_path, ".png")) {
-    throw UsageError("--colour '" + *colour_path + "': must end in .png");
-  }
-  if (ground_truth_path.has_value() != ground_truth_scale.has_value()) {
-    throw UsageError("--gt and --gt-scale go together");
-  }
-  if (!ground_truth_path && (nonoccluded_path || discontinuity_path || border)) {
-    throw UsageError("--gt-nonocc, --gt-disc and --gt-border need --gt");
-  }
-  if (window && *window % 2 == 0) throw UsageError("--window " + std::to_string(*window) + ": must be odd");
-
-  if (!std::ifstream(config_path)) throw std::runtime_error(config_path + ": cannot read config file");
-  const mrpt::config::CConfigFile config(config_path);
-  StereoOptions options = loadIniSection(config, "stereo", loadStereoOptions, config_path);
+  const DisparityRequest request = parseRequest(command_line);
+  if (!std::ifstream(request.config_path)) throw std::runtime_error(request.config_path + ": cannot read config file");
+  const mrpt::config::CConfigFile config(request.config_path);
+  const StereoOptions options = loadOptions(request, config);
   std::optional<SpikeFilter> spike_filter;
-  if (spike_removal) spike_filter.emplace(loadIniSection(config, "spike_removal", loadSpikeRemovalOptions, config_path));
-  if (max_disparity) options.max_disparity = *max_disparity;
-  if (window) options.window = *window;
-  if (subpixel) options.subpixel = true;
-  if (backend) {
-    try {
-      options.backend = parseStereoBackend(*backend, "--backend");
-    } catch (const ConfigError& error) {
-      throw UsageError(error.what());
-    }
+  if (request.spike_removal) {
+    spike_filter.emplace(loadIniSection(config, "spike_removal", loadSpikeRemovalOptions, request.config_path));
   }
-
-  StereoFrame frame;
-  frame.reference = readGreyImage(reference_path);
-  for (const std::string& camera : cameras) {
-    frame.secondaries.push_back(parseCamera(camera));
-    const cv::Mat1b& image = frame.secondaries.back().image;
-    if (image.size() != frame.reference.size()) {
-      throw std::runtime_error(camera.substr(0, camera.rfind(':', camera.rfind(':') - 1)) + ": image is " +
-                               std::to_string(image.cols) + "x" + std::to_string(image.rows) + ", the reference " +
-                               reference_path + " is " + std::to_string(frame.reference.cols) + "x" +
-                               std::to_string(frame.reference.rows));
-    }
-  }
+  const StereoFrame frame = loadFrame(request);
   if (options.max_disparity >= frame.reference.cols) {
-    const std::string what = max_disparity ? "--max-disp" : config_path + ": [stereo] max_disparity";
+    const std::string what = request.max_disparity ? "--max-disp" : request.config_path + ": [stereo] max_disparity";
     throw UsageError(what + " " + std::to_string(options.max_disparity) + ": must be smaller than the image width " +
                      std::to_string(frame.reference.cols));
   }
   validateStereoOptions(options);
-  cv::Mat1f ground_truth;
-  cv::Mat1b nonoccluded, discontinuities;
-  if (ground_truth_path) {
-    ground_truth = loadMiddleburyGroundTruth(*ground_truth_path, *ground_truth_scale);
-    if (ground_truth.size() != frame.reference.size()) {
-      throw std::runtime_error(*ground_truth_path + ": ground truth is " + std::to_string(ground_truth.cols) + "x" +
-                               std::to_string(ground_truth.rows) + ", the reference " + reference_path + " is " +
-                               std::to_string(frame.reference.cols) + "x" + std::to_string(frame.reference.rows));
-    }
-    nonoccluded = nonoccluded_path ? loadMaskFor(*nonoccluded_path, ground_truth)
-                                   : nonOccludedMask(ground_truth, frame.secondaries.front().camera);
-    if (discontinuity_path) discontinuities = loadMaskFor(*discontinuity_path, ground_truth);
-  }
+  const std::optional<GroundTruth> truth =
+      request.ground_truth_path ? std::optional<GroundTruth>(loadGroundTruth(request, frame)) : std::nullopt;
 
   cv::Mat1f disparity = computeDisparity(frame, options);
   if (spike_filter) {
     cv::Mat1b rejected;
     spike_filter->apply(disparity, rejected);
   }
-  writeDisparityImage(out_path, disparity);
-  if (colour_path) writeDisparityColourPng(*colour_path, disparity, options.max_disparity);
-  std::cout << "disparity: " << out_path << " (" << disparity.cols << "x" << disparity.rows << ", "
+  writeDisparityImage(request.out_path, disparity);
+  if (request.colour_path) writeDisparityColourPng(*request.colour_path, disparity, options.max_disparity);
+  std::cout << "disparity: " << request.out_path << " (" << disparity.cols << "x" << disparity.rows << ", "
             << frame.secondaries.size() << " secondary view" << (frame.secondaries.size() > 1 ? "s" : "")
             << ", backend " << toString(options.backend) << (spike_filter ? ", spike removal" : "") << ")\n";
-  if (ground_truth_path) {
-    const int ignored_border = border.value_or(18);
-    printEvaluation("all", evaluateDisparity(disparity, ground_truth, ignored_border));
-    printEvaluation(nonoccluded_path ? "nonocc" : "nonocc (derived from the ground truth)",
-                    evaluateDisparity(disparity, ground_truth, ignored_border, nonoccluded));
-    if (discontinuity_path) {
-      printEvaluation("disc", evaluateDisparity(disparity, ground_truth, ignored_border, discontinuities));
-    }
-  }
+  if (truth) printEvaluations(request, disparity, *truth);
   return 0;
 }
 

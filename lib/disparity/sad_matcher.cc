@@ -567,20 +567,10 @@ struct SadMatcher::Workspace {
   SadMatch result;
 };
 
-SadMatcher::SadMatcher(const StereoOptions& options) : options_(options), workspace_(std::make_unique<Workspace>()) {
-  validateStereoOptions(options_);
-}
+namespace {
 
-SadMatcher::~SadMatcher() = default;
-
-const SadMatch& SadMatcher::match(const StereoFrame& frame) {
-  checkStereoFrame(frame);
-  if (frame.secondaries.size() > kMaxCameras) {
-    throw std::invalid_argument("stereo frame: at most " + std::to_string(kMaxCameras) + " secondary views");
-  }
-  const StereoOptions& options = options_;
-  const int width = frame.reference.cols, height = frame.reference.rows;
-  PreparedFrame& prepared = workspace_->prepared;
+// The prefiltered, border-padded reference and the candidate sources of every secondary view.
+void prepareFrame(const StereoFrame& frame, const StereoOptions& options, PreparedFrame& prepared) {
   prepared.radius = options.window / 2;
   prepared.min_disparity = options.min_disparity;
   prepared.disparities = options.disparityCount();
@@ -602,8 +592,11 @@ const SadMatch& SadMatcher::match(const StereoFrame& frame) {
     prefilter(frame.secondaries[c].image, source.filtered);
     prepareCandidateSource(source.filtered, frame.secondaries[c].camera, prepared, source);
   }
+}
 
-  SadMatch& match = workspace_->result;
+// Every output image at its starting value; the left-right check's and the runner-up's images only
+// when they are asked for (a binocular horizontal rig for the one-pass left-right check).
+void resetResult(int height, int width, const StereoOptions& options, PreparedFrame& prepared, SadMatch& match) {
   match.disparity.create(height, width);
   match.disparity.setTo(kInvalidDisparity);
   match.best_score.create(height, width);
@@ -626,7 +619,28 @@ const SadMatch& SadMatcher::match(const StereoFrame& frame) {
   } else {
     match.second_score.release();
   }
+}
 
+}  // namespace
+
+SadMatcher::SadMatcher(const StereoOptions& options) : options_(options), workspace_(std::make_unique<Workspace>()) {
+  validateStereoOptions(options_);
+}
+
+SadMatcher::~SadMatcher() = default;
+
+const SadMatch& SadMatcher::match(const StereoFrame& frame) {
+  checkStereoFrame(frame);
+  if (frame.secondaries.size() > kMaxCameras) {
+    throw std::invalid_argument("stereo frame: at most " + std::to_string(kMaxCameras) + " secondary views");
+  }
+  const StereoOptions& options = options_;
+  PreparedFrame& prepared = workspace_->prepared;
+  prepareFrame(frame, options, prepared);
+  SadMatch& match = workspace_->result;
+  resetResult(frame.reference.rows, frame.reference.cols, options, prepared, match);
+
+  const int height = frame.reference.rows;
   const std::vector<MatchRegion> regions = matchRegions(frame, options.min_disparity, options.max_disparity);
   const long long largest_score = static_cast<long long>(options.window) * options.window *
                                   maxPrefilteredDifference(options.prefilter, options.prefilter_cap) *

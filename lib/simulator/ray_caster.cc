@@ -133,6 +133,22 @@ RayHit RayCaster::cast(const Ray& ray, double t_max) {
   return hit;
 }
 
+namespace {
+
+// Narrows [t_begin, t_end] to where origin + t * direction lies in [low, high]; false when empty.
+bool clipToSlab(double origin, double direction, double inverse, double low, double high, double& t_begin,
+                double& t_end) {
+  if (direction == 0.0) return origin >= low && origin <= high;
+  double ta = (low - origin) * inverse;
+  double tb = (high - origin) * inverse;
+  if (ta > tb) std::swap(ta, tb);
+  t_begin = std::max(t_begin, ta);
+  t_end = std::min(t_end, tb);
+  return t_begin <= t_end;
+}
+
+}  // namespace
+
 void RayCaster::castThroughGrid(const Ray& ray, double* best_t, int* best_solid, int* best_face) {
   if (cells_x_ == 0) return;
   const double ox = ray.origin.x();
@@ -149,19 +165,9 @@ void RayCaster::castThroughGrid(const Ray& ray, double* best_t, int* best_solid,
   // Clip the ray's floor projection to the grid. Divisions are few: this runs once per pixel.
   const double inverse_dx = dx != 0.0 ? 1.0 / dx : 0.0;
   const double inverse_dy = dy != 0.0 ? 1.0 / dy : 0.0;
-  const double grid_x_max = grid_x_min_ + cells_x_ * cell_size_;
-  const double grid_y_max = grid_y_min_ + cells_y_ * cell_size_;
   double t_begin = 0.0;
-  const auto clip = [&](double origin, double direction, double inverse, double low, double high) {
-    if (direction == 0.0) return origin >= low && origin <= high;
-    double ta = (low - origin) * inverse;
-    double tb = (high - origin) * inverse;
-    if (ta > tb) std::swap(ta, tb);
-    t_begin = std::max(t_begin, ta);
-    t_end = std::min(t_end, tb);
-    return t_begin <= t_end;
-  };
-  if (!clip(ox, dx, inverse_dx, grid_x_min_, grid_x_max) || !clip(oy, dy, inverse_dy, grid_y_min_, grid_y_max)) {
+  if (!clipToSlab(ox, dx, inverse_dx, grid_x_min_, grid_x_min_ + cells_x_ * cell_size_, t_begin, t_end) ||
+      !clipToSlab(oy, dy, inverse_dy, grid_y_min_, grid_y_min_ + cells_y_ * cell_size_, t_begin, t_end)) {
     return;
   }
 
