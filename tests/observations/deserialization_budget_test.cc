@@ -10,6 +10,12 @@ namespace stereonav {
 namespace {
 
 TEST(DeserializationBudgetTest, AllocationBeyondTheBudgetFailsOnlyWhileItLives) {
+#ifdef __SANITIZE_ADDRESS__
+  // AddressSanitizer's operator new aborts the process when the address space runs out instead of
+  // throwing std::bad_alloc (allocator_may_return_null covers malloc only), so the refusal cannot
+  // be observed here; the Release run checks it.
+  GTEST_SKIP() << "AddressSanitizer aborts on out-of-memory instead of throwing std::bad_alloc";
+#endif
   constexpr size_t kGigabyte = size_t{1} << 30;
   {
     DeserializationBudget budget(64u << 20);
