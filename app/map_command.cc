@@ -61,30 +61,30 @@ void checkFileName(const std::string& path, const std::string& option) {
   if (path.empty() || path.back() == '/') throw UsageError(option + ": expected a file name, got '" + path + "'");
 }
 
-}  // namespace
-
-int runMapCommand(const std::vector<std::string>& arguments) {
-  CommandLine command_line(arguments, {"help"});
-  if (command_line.flag("help")) {
-    std::cout << kUsage;
-    return 0;
-  }
-  const std::string config_path = command_line.required("config");
+struct MapRequest {
+  std::string config_path;
   MappingJob job;
+  std::optional<std::string> truth_path;
+};
+
+MapRequest parseMapRequest(CommandLine& command_line) {
+  MapRequest request;
+  MappingJob& job = request.job;
+  request.config_path = command_line.required("config");
   job.rawlog_path = command_line.required("rawlog");
   job.output_prefix = command_line.required("out");
   job.debug_panel_directory = command_line.value("debug-panels").value_or("");
   job.virtual_scan_rawlog = command_line.value("virtual-scans").value_or("");
-  const std::optional<std::string> truth_path = command_line.value("use-ground-truth-poses");
+  request.truth_path = command_line.value("use-ground-truth-poses");
   const std::optional<std::string> pose_source = command_line.value("poses");
   command_line.rejectUnknown();
   try {
     job.pose_source = pose_source ? parseMapPoseSource(*pose_source)
-                                  : (truth_path ? MapPoseSource::kGroundTruth : MapPoseSource::kOdometry);
+                                  : (request.truth_path ? MapPoseSource::kGroundTruth : MapPoseSource::kOdometry);
   } catch (const std::invalid_argument& error) {
     throw UsageError(std::string("--poses: ") + error.what());
   }
-  if (job.pose_source == MapPoseSource::kGroundTruth && !truth_path) {
+  if (job.pose_source == MapPoseSource::kGroundTruth && !request.truth_path) {
     throw UsageError("--poses ground_truth needs --use-ground-truth-poses GT.txt");
   }
   checkFileName(job.output_prefix, "--out");
@@ -94,22 +94,38 @@ int runMapCommand(const std::vector<std::string>& arguments) {
     checkFileName(job.virtual_scan_rawlog, "--virtual-scans");
     checkWritableFolder(folderOf(job.virtual_scan_rawlog), "--virtual-scans");
   }
+  return request;
+}
 
-  const MappingOptions options = loadMappingOptionsFile(config_path);
-  if (truth_path) job.ground_truth_poses = loadPoseList(*truth_path);
-
-  const bool interactive = isatty(STDERR_FILENO) != 0;
+// Progress on a terminal, Ctrl-C or SIGTERM ends the map with what was mapped so far.
+MappingReport mapWithProgress(const MappingOptions& options, const MappingJob& job) {
   std::optional<ProgressMeter> progress;
-  if (interactive) progress.emplace(std::cerr, countRawlogFrames(job.rawlog_path, options));
+  if (isatty(STDERR_FILENO) != 0) progress.emplace(std::cerr, countRawlogFrames(job.rawlog_path, options));
   SigintStopRequest sigint;
   MappingCallbacks callbacks;
   callbacks.on_frame = [&](size_t frames, const mrpt::maps::CMetricMap&) {
     if (progress) progress->update(frames);
   };
   callbacks.stop_requested = [&] { return sigint.requested(); };
-
-  const MappingReport report = mapRawlog(options, job, callbacks);
+  MappingReport report = mapRawlog(options, job, callbacks);
   if (progress) progress->finish(report.frames_mapped);
+  return report;
+}
+
+}  // namespace
+
+int runMapCommand(const std::vector<std::string>& arguments) {
+  CommandLine command_line(arguments, {"help"});
+  if (command_line.flag("help")) {
+    std::cout << kUsage;
+    return 0;
+  }
+  MapRequest request = parseMapRequest(command_line);
+  const MappingJob& job = request.job;
+  const MappingOptions options = loadMappingOptionsFile(request.config_path);
+  if (request.truth_path) request.job.ground_truth_poses = loadPoseList(*request.truth_path);
+
+  const MappingReport report = mapWithProgress(options, job);
   for (const std::string& warning : report.calibration_warnings) {
     std::cerr << "stereonav map: calibration: " << warning << "\n";
   }
@@ -124,10 +140,10 @@ int runMapCommand(const std::vector<std::string>& arguments) {
             << "stereonav map: wrote " << job.output_prefix
             << ".{gridmap,png,yaml,pgm,3Dscene,traj.tum,stats.json}"
             << (job.virtual_scan_rawlog.empty() ? "" : " and " + job.virtual_scan_rawlog) << "\n";
-  if (truth_path && job.pose_source != MapPoseSource::kGroundTruth && report.frames_mapped > 0) {
+  if (request.truth_path && job.pose_source != MapPoseSource::kGroundTruth) {
     std::vector<mrpt::poses::CPose2D> truth = job.ground_truth_poses;
     truth.resize(std::min(truth.size(), report.path.size()));
-    std::cerr << "stereonav map: trajectory error against " << *truth_path << ":\n"
+    std::cerr << "stereonav map: trajectory error against " << *request.truth_path << ":\n"
               << trajectoryError(report.path, truth).toText();
   }
   return report.complete() ? 0 : kPartialMapStatus;

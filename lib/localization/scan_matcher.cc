@@ -112,44 +112,61 @@ PriorSigma priorSigmaAfter(const mrpt::poses::CPose2D& motion, const Localizatio
               options.prior_sigma_per_rad * std::abs(mrpt::math::wrapToPi(motion.phi()))};
 }
 
-ScanMatch matchScan(const std::vector<ScanPoint>& points, const ObstacleDistanceField& field,
-                    const mrpt::poses::CPose2D& prior, const PriorSigma& prior_sigma,
-                    const LocalizationOptions& options) {
-  ScanMatch match;
-  match.pose = prior;
-  match.points = static_cast<int>(points.size());
-  if (match.points < options.min_matched_points || !field.hasObstacles()) return match;
+namespace {
 
-  PoseScorer scorer(points, field, prior, prior_sigma, options);
-  const double step_phi = mrpt::DEG2RAD(options.step_deg);
-  const int steps_xy = static_cast<int>(std::round(options.window_m / options.step_m));
-  const int steps_phi = static_cast<int>(std::round(options.window_deg / options.step_deg));
-  // Each direction normalised by its window (at least one step), so spreads compare.
-  const Eigen::Vector3d scale(std::max(steps_xy, 1) * options.step_m,
-                              std::max(steps_xy, 1) * options.step_m,
-                              std::max(steps_phi, 1) * step_phi);
+// The search lattice of one match: offsets are searched in steps and compared normalised by the
+// window (at least one step) in each direction, so spreads of metres and radians compare.
+struct SearchLattice {
+  explicit SearchLattice(const LocalizationOptions& options)
+      : step_xy(options.step_m),
+        step_phi(mrpt::DEG2RAD(options.step_deg)),
+        steps_xy(static_cast<int>(std::round(options.window_m / options.step_m))),
+        steps_phi(static_cast<int>(std::round(options.window_deg / options.step_deg))),
+        scale(std::max(steps_xy, 1) * step_xy, std::max(steps_xy, 1) * step_xy,
+              std::max(steps_phi, 1) * step_phi) {}
+  double step_xy, step_phi;
+  int steps_xy, steps_phi;
+  Eigen::Vector3d scale;
+};
 
-  // Coarse search: the best pose under likelihood x prior, and the likelihood's own spread.
-  std::vector<std::pair<Eigen::Vector3d, double>> likelihoods;
-  likelihoods.reserve(static_cast<size_t>((2 * steps_xy + 1) * (2 * steps_xy + 1) * (2 * steps_phi + 1)));
-  double best_score = -std::numeric_limits<double>::infinity();
-  Offset best;
-  for (int k = -steps_phi; k <= steps_phi; ++k) {
-    const double dphi = k * step_phi;
+struct BestOffset {
+  Offset offset;
+  double score = -std::numeric_limits<double>::infinity();
+
+  void consider(const Offset& candidate, double candidate_score) {
+    if (candidate_score <= score) return;
+    score = candidate_score;
+    offset = candidate;
+  }
+};
+
+using NormalisedLikelihoods = std::vector<std::pair<Eigen::Vector3d, double>>;
+
+// The best pose under likelihood x prior over the whole window; every likelihood is kept for
+// the spread.
+BestOffset coarseSearch(PoseScorer& scorer, const SearchLattice& lattice,
+                        NormalisedLikelihoods& likelihoods) {
+  likelihoods.reserve(static_cast<size_t>((2 * lattice.steps_xy + 1) * (2 * lattice.steps_xy + 1) *
+                                          (2 * lattice.steps_phi + 1)));
+  BestOffset best;
+  for (int k = -lattice.steps_phi; k <= lattice.steps_phi; ++k) {
+    const double dphi = k * lattice.step_phi;
     scorer.rotate(dphi);
-    for (int j = -steps_xy; j <= steps_xy; ++j) {
-      for (int i = -steps_xy; i <= steps_xy; ++i) {
-        const double dx = i * options.step_m, dy = j * options.step_m;
+    for (int j = -lattice.steps_xy; j <= lattice.steps_xy; ++j) {
+      for (int i = -lattice.steps_xy; i <= lattice.steps_xy; ++i) {
+        const double dx = i * lattice.step_xy, dy = j * lattice.step_xy;
         const double log_likelihood = scorer.logLikelihood(dx, dy);
-        likelihoods.emplace_back(Eigen::Vector3d(dx, dy, dphi).cwiseQuotient(scale), log_likelihood);
-        const double score = log_likelihood + scorer.logPrior(dx, dy, dphi);
-        if (score > best_score) {
-          best_score = score;
-          best = {dx, dy, dphi};
-        }
+        likelihoods.emplace_back(Eigen::Vector3d(dx, dy, dphi).cwiseQuotient(lattice.scale),
+                                 log_likelihood);
+        best.consider({dx, dy, dphi}, log_likelihood + scorer.logPrior(dx, dy, dphi));
       }
     }
   }
+  return best;
+}
+
+// The covariance of the offset under the likelihood alone: how well the scan pins each direction.
+Eigen::Matrix3d likelihoodSpread(const NormalisedLikelihoods& likelihoods) {
   double max_log_likelihood = -std::numeric_limits<double>::infinity();
   for (const auto& entry : likelihoods) max_log_likelihood = std::max(max_log_likelihood, entry.second);
   double weight_sum = 0.0;
@@ -162,28 +179,30 @@ ScanMatch matchScan(const std::vector<ScanPoint>& points, const ObstacleDistance
     second_moment += weight * offset * offset.transpose();
   }
   mean /= weight_sum;
-  match.spread = second_moment / weight_sum - mean * mean.transpose();
+  return second_moment / weight_sum - mean * mean.transpose();
+}
 
-  // Fine search around the coarse best, a quarter step apart.
-  const Offset coarse = best;
-  const double fine_xy = options.step_m / 4, fine_phi = step_phi / 4;
+// Around the coarse best, a quarter step apart.
+void fineSearch(PoseScorer& scorer, const SearchLattice& lattice, BestOffset& best) {
+  const Offset coarse = best.offset;
+  const double fine_xy = lattice.step_xy / 4, fine_phi = lattice.step_phi / 4;
   for (int k = -4; k <= 4; ++k) {
     const double dphi = coarse.phi + k * fine_phi;
     scorer.rotate(dphi);
     for (int j = -4; j <= 4; ++j) {
       for (int i = -4; i <= 4; ++i) {
         const double dx = coarse.x + i * fine_xy, dy = coarse.y + j * fine_xy;
-        const double score = scorer.logLikelihood(dx, dy) + scorer.logPrior(dx, dy, dphi);
-        if (score > best_score) {
-          best_score = score;
-          best = {dx, dy, dphi};
-        }
+        best.consider({dx, dy, dphi}, scorer.logLikelihood(dx, dy) + scorer.logPrior(dx, dy, dphi));
       }
     }
   }
+}
 
-  // Keep the correction along the directions the scan pins down only.
-  const Eigen::Vector3d correction = Eigen::Vector3d(best.x, best.y, best.phi).cwiseQuotient(scale);
+// The correction kept along the directions the scan pins down only (spread below max_spread).
+Eigen::Vector3d constrainedCorrection(const Offset& best, const SearchLattice& lattice,
+                                      const LocalizationOptions& options, ScanMatch& match) {
+  const Eigen::Vector3d correction =
+      Eigen::Vector3d(best.x, best.y, best.phi).cwiseQuotient(lattice.scale);
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> directions(match.spread);
   Eigen::Vector3d kept = Eigen::Vector3d::Zero();
   for (int d = 0; d < 3; ++d) {
@@ -192,7 +211,27 @@ ScanMatch matchScan(const std::vector<ScanPoint>& points, const ObstacleDistance
     kept += direction.dot(correction) * direction;
     ++match.constrained_directions;
   }
-  kept = kept.cwiseProduct(scale);
+  return kept.cwiseProduct(lattice.scale);
+}
+
+}  // namespace
+
+ScanMatch matchScan(const std::vector<ScanPoint>& points, const ObstacleDistanceField& field,
+                    const mrpt::poses::CPose2D& prior, const PriorSigma& prior_sigma,
+                    const LocalizationOptions& options) {
+  ScanMatch match;
+  match.pose = prior;
+  match.points = static_cast<int>(points.size());
+  if (match.points < options.min_matched_points || !field.hasObstacles()) return match;
+
+  PoseScorer scorer(points, field, prior, prior_sigma, options);
+  const SearchLattice lattice(options);
+  NormalisedLikelihoods likelihoods;
+  BestOffset best = coarseSearch(scorer, lattice, likelihoods);
+  match.spread = likelihoodSpread(likelihoods);
+  fineSearch(scorer, lattice, best);
+
+  const Eigen::Vector3d kept = constrainedCorrection(best.offset, lattice, options, match);
   const mrpt::poses::CPose2D corrected(prior.x() + kept.x(), prior.y() + kept.y(),
                                        mrpt::math::wrapToPi(prior.phi() + kept.z()));
   match.matched_points = scorer.matchedPoints(corrected);

@@ -84,6 +84,56 @@ void appendSpansWithout(const CellSpanBuffer& clear, const std::vector<CellSpan>
 
 const GridFrame kMetricFrame{0.0, 0.0, 1.0};
 
+// One side of a column's wedge: its near corner, its line of sight and that line as an edge.
+struct WedgeSide {
+  CellPoint near;
+  CellPoint line_of_sight;
+  EdgeLine ray;
+};
+
+// Counter-clockwise: near right, far right, far left, near left.
+ConvexPolygon occupiedRegion(const FloorAxes& axes, const ColumnReading& reading, const WedgeSide& right,
+                             const WedgeSide& left, const EdgeLine& near_edge) {
+  const CellPoint far_left = pointAt(axes, left.line_of_sight, reading.farDistance());
+  const CellPoint far_right = pointAt(axes, right.line_of_sight, reading.farDistance());
+  ConvexPolygon occupied;
+  occupied.size = 4;
+  occupied.vertices = {right.near, far_right, far_left, left.near};
+  occupied.edges = {right.ray, EdgeLine::through(far_right, far_left), left.ray, near_edge};
+  return occupied;
+}
+
+// Moved by half a cell, the region has the grid's cell corners at its cell centres.
+ConvexPolygon shiftedHalfACell(ConvexPolygon polygon) {
+  for (CellPoint& vertex : polygon.vertices) {
+    vertex.u += 0.5;
+    vertex.v += 0.5;
+  }
+  for (EdgeLine& edge : polygon.edges) {
+    edge.u0 += 0.5;
+    edge.v0 += 0.5;
+  }
+  return polygon;
+}
+
+// The CLEAR union's spans after the occupied ones; with obstacle borders kept, without the cells
+// an occupied region's corners touch.
+void appendClearSpans(bool keep_obstacle_borders, const CellWindow& window, ScanRaster& raster) {
+  if (!keep_obstacle_borders) {
+    appendPolygonSpans(raster.clear_edges, raster.spans, window, &raster.clear_scan);
+    return;
+  }
+  raster.clear_cells.clear();
+  appendPolygonSpans(raster.clear_edges, raster.clear_cells, window, &raster.clear_scan);
+  raster.border_cells.clear();
+  appendTouchedCells(raster.occupied_corners, raster.border_cells);
+  std::sort(raster.border_cells.begin(), raster.border_cells.end(),
+            [](const CellSpan& a, const CellSpan& b) {
+              return a.row != b.row ? a.row < b.row : a.col_begin < b.col_begin;
+            });
+  appendSpansWithout(raster.clear_cells, raster.border_cells, raster.spans);
+}
+
 }  // namespace
 
 HeadTilt HeadTilt::of(const mrpt::poses::CPose3D& optical_pose_on_robot) {
@@ -295,25 +345,10 @@ void StereoSensorModel::rasterize(const std::vector<ColumnReading>& readings,
 
     ReadingSpans spans{reading.disparity, static_cast<uint32_t>(raster.spans.size()), 0};
     if (reading.hasOccupiedRegion()) {
-      const CellPoint far_left = pointAt(axes, left, reading.farDistance());
-      const CellPoint far_right = pointAt(axes, right, reading.farDistance());
-      ConvexPolygon occupied;  // counter-clockwise: near right, far right, far left, near left
-      occupied.size = 4;
-      occupied.vertices = {near_right, far_right, far_left, near_left};
-      occupied.edges = {right_ray, EdgeLine::through(far_right, far_left), left_ray, near_edge};
+      const ConvexPolygon occupied =
+          occupiedRegion(axes, reading, {near_right, right, right_ray}, {near_left, left, left_ray}, near_edge);
       appendCellSpans(occupied, raster.spans, window);
-      if (options_.keep_obstacle_borders) {
-        // Moved by half a cell, the region has the grid's cell corners at its cell centres.
-        for (CellPoint& vertex : occupied.vertices) {
-          vertex.u += 0.5;
-          vertex.v += 0.5;
-        }
-        for (EdgeLine& edge : occupied.edges) {
-          edge.u0 += 0.5;
-          edge.v0 += 0.5;
-        }
-        appendCellSpans(occupied, raster.occupied_corners);
-      }
+      if (options_.keep_obstacle_borders) appendCellSpans(shiftedHalfACell(occupied), raster.occupied_corners);
     }
     spans.occupied_end = static_cast<uint32_t>(raster.spans.size());
     raster.readings.push_back(spans);
@@ -322,19 +357,7 @@ void StereoSensorModel::rasterize(const std::vector<ColumnReading>& readings,
     ScanEdge::appendTo(clear, previous_near_left, axes.centre, previous_left_ray);
   }
   raster.clear_begin = raster.spans.size();
-  if (!options_.keep_obstacle_borders) {
-    appendPolygonSpans(clear, raster.spans, window, &raster.clear_scan);
-    return;
-  }
-  raster.clear_cells.clear();
-  appendPolygonSpans(clear, raster.clear_cells, window, &raster.clear_scan);
-  raster.border_cells.clear();
-  appendTouchedCells(raster.occupied_corners, raster.border_cells);
-  std::sort(raster.border_cells.begin(), raster.border_cells.end(),
-            [](const CellSpan& a, const CellSpan& b) {
-              return a.row != b.row ? a.row < b.row : a.col_begin < b.col_begin;
-            });
-  appendSpansWithout(raster.clear_cells, raster.border_cells, raster.spans);
+  appendClearSpans(options_.keep_obstacle_borders, window, raster);
 }
 
 }  // namespace stereonav

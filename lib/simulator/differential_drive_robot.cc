@@ -64,6 +64,50 @@ bool DifferentialDriveRobot::footprintCollides(double x, double y, const std::ve
   return false;
 }
 
+double DifferentialDriveRobot::freeFractionOfArc(double distance, double turn,
+                                                 const std::vector<Solid>& moving_solids,
+                                                 bool* blocked) const {
+  const auto collidesAt = [&](double fraction) {
+    const mrpt::poses::CPose2D there = pose_ + arcIncrement(fraction * distance, fraction * turn);
+    return footprintCollides(there.x(), there.y(), moving_solids);
+  };
+  if (collidesAt(0.0)) {
+    // Something moved into the robot: it may only drive out of it.
+    *blocked = collidesAt(1.0);
+    return *blocked ? 0.0 : 1.0;
+  }
+  // Check the arc in pieces shorter than half the radius, so no thin wall is jumped over; then
+  // bisect between the last free and the first blocked piece to stop at contact.
+  const int pieces = std::max(1, static_cast<int>(std::ceil(std::abs(distance) / (options_.radius_m / 2))));
+  for (int k = 1; k <= pieces; ++k) {
+    const double fraction = static_cast<double>(k) / pieces;
+    if (!collidesAt(fraction)) continue;
+    double low = static_cast<double>(k - 1) / pieces;
+    double high = fraction;
+    for (int i = 0; i < kContactBisections; ++i) {
+      const double middle = (low + high) / 2;
+      (collidesAt(middle) ? high : low) = middle;
+    }
+    *blocked = true;
+    return low;
+  }
+  *blocked = false;
+  return 1.0;
+}
+
+void DifferentialDriveRobot::measureOdometry(double travelled, double turned) {
+  std::normal_distribution<double> unit(0.0, 1.0);
+  const double measured_distance =
+      travelled * (1.0 + options_.odometry_distance_bias) +
+      unit(random_) * options_.odometry_distance_noise * std::abs(travelled);
+  const double measured_turn =
+      turned * (1.0 + options_.odometry_turn_bias) +
+      unit(random_) * (options_.odometry_turn_noise * std::abs(turned) +
+                       options_.odometry_drift_rad_per_m * std::abs(travelled));
+  odometry_ = odometry_ + arcIncrement(measured_distance, measured_turn);
+  odometry_.normalizePhi();
+}
+
 bool DifferentialDriveRobot::step(double commanded_speed, double commanded_turn_rate, double dt,
                                   const std::vector<Solid>& moving_solids) {
   const double target_speed = std::clamp(commanded_speed, -options_.max_speed_mps, options_.max_speed_mps);
@@ -73,54 +117,16 @@ bool DifferentialDriveRobot::step(double commanded_speed, double commanded_turn_
 
   const double distance = speed_ * dt;
   const double turn = turn_rate_ * dt;
-  const auto collidesAt = [&](double fraction) {
-    const mrpt::poses::CPose2D there = pose_ + arcIncrement(fraction * distance, fraction * turn);
-    return footprintCollides(there.x(), there.y(), moving_solids);
-  };
-
-  // Check the arc in pieces shorter than half the radius, so no thin wall is jumped over; then
-  // bisect between the last free and the first blocked piece to stop at contact.
-  double free_fraction = 1.0;
   bool blocked = false;
-  if (collidesAt(0.0)) {
-    // Something moved into the robot: it may only drive out of it.
-    blocked = collidesAt(1.0);
-    free_fraction = blocked ? 0.0 : 1.0;
-  } else {
-    const int pieces = std::max(1, static_cast<int>(std::ceil(std::abs(distance) / (options_.radius_m / 2))));
-    for (int k = 1; k <= pieces; ++k) {
-      const double fraction = static_cast<double>(k) / pieces;
-      if (!collidesAt(fraction)) continue;
-      double low = static_cast<double>(k - 1) / pieces;
-      double high = fraction;
-      for (int i = 0; i < kContactBisections; ++i) {
-        const double middle = (low + high) / 2;
-        (collidesAt(middle) ? high : low) = middle;
-      }
-      free_fraction = low;
-      blocked = true;
-      break;
-    }
-  }
+  const double free_fraction = freeFractionOfArc(distance, turn, moving_solids, &blocked);
 
   // Blocked, the robot still finishes the step's turn on the spot: a disc turning in place
   // cannot hit anything, and it lets a controller steer away from what it touches.
   const double travelled = free_fraction * distance;
-  const double turned = turn;
   pose_ = pose_ + arcIncrement(travelled, free_fraction * turn) +
           mrpt::poses::CPose2D(0.0, 0.0, (1.0 - free_fraction) * turn);
   pose_.normalizePhi();
-
-  std::normal_distribution<double> unit(0.0, 1.0);
-  const double measured_distance =
-      travelled * (1.0 + options_.odometry_distance_bias) +
-      unit(random_) * options_.odometry_distance_noise * std::abs(travelled);
-  const double measured_turn =
-      turned * (1.0 + options_.odometry_turn_bias) +
-      unit(random_) * (options_.odometry_turn_noise * std::abs(turned) +
-                                options_.odometry_drift_rad_per_m * std::abs(travelled));
-  odometry_ = odometry_ + arcIncrement(measured_distance, measured_turn);
-  odometry_.normalizePhi();
+  measureOdometry(travelled, turn);
 
   if (blocked) {
     speed_ = 0.0;

@@ -61,6 +61,10 @@ class DifferentialDriveRobot {
  private:
   // Whether the footprint at (x, y) overlaps a solid of the world in the body's height band.
   bool footprintCollides(double x, double y, const std::vector<Solid>& moving_solids) const;
+  // The share of the step's arc (distance, turn) driven before contact, and whether it stopped.
+  double freeFractionOfArc(double distance, double turn, const std::vector<Solid>& moving_solids,
+                           bool* blocked) const;
+  void measureOdometry(double travelled, double turned);
 
   DifferentialDriveOptions options_;
   std::vector<Solid> static_in_band_;
