@@ -5,6 +5,10 @@
 
 namespace stereonav::app {
 
+// Exit status of a job stopped before its end (a damaged input, Ctrl-C or SIGTERM) whose outputs
+// hold what was done so far.
+constexpr int kPartialWorkStatus = 3;
+
 // One function per subcommand: arguments in (after the subcommand name), exit status out.
 // Each lives in its own <name>_command.cc and is listed in main.cc.
 int runDisparityCommand(const std::vector<std::string>& arguments);

@@ -1,7 +1,12 @@
+#include <unistd.h>
+
 #include <iostream>
+#include <optional>
 
 #include "command_line.h"
 #include "commands.h"
+#include "progress_meter.h"
+#include "sigint_stop.h"
 #include "closed_loop/exploration_run.h"
 #include "simulator/world_loader.h"
 
@@ -24,7 +29,8 @@ constexpr const char* kUsage =
     "at all; distance, times, collisions and what they touched, stop reason). --record writes the\n"
     "frames with odometry as a rawlog (+ OUT.gt.txt) that 'stereonav map' replays to the same map.\n"
     "--seed N seeds the noise and moves the start up to 0.5 m with any heading; --max-time\n"
-    "overrides [simulation] max_duration_s.\n";
+    "overrides [simulation] max_duration_s. On a terminal a progress line shows frames, rate and\n"
+    "ETA. Ctrl-C or SIGTERM ends the run early with every output written (exit status 3).\n";
 
 }  // namespace
 
@@ -46,12 +52,21 @@ int runExploreCommand(const std::vector<std::string>& arguments) {
 
   const ExplorationConfig config = loadExplorationConfig(config_path);
   const World world = loadWorld(world_path);
-  const ExplorationReport report = runExploration(world, config, job);
+  std::optional<ProgressMeter> progress;
+  SigintStopRequest sigint;
+  ExplorationCallbacks callbacks;
+  callbacks.on_frame = [&](size_t frames, size_t frame_limit) {
+    if (!progress && isatty(STDERR_FILENO) != 0) progress.emplace(std::cerr, "exploring", frame_limit);
+    if (progress) progress->update(frames);
+  };
+  callbacks.stop_requested = [&] { return sigint.requested(); };
+  const ExplorationReport report = runExploration(world, config, job, callbacks);
+  if (progress) progress->finish(report.frames);
   std::cerr << "stereonav explore: " << report.summary() << "\n"
             << "stereonav explore: wrote " << job.output_prefix
             << ".{gridmap,png,yaml,pgm,3Dscene,path.txt,truth.txt,navlog.csv,reactivenavlog,path.png,plan.png,stats.json}"
             << (job.record_rawlog.empty() ? "" : " and " + job.record_rawlog) << "\n";
-  return 0;
+  return report.interrupted ? kPartialWorkStatus : 0;
 }
 
 }  // namespace stereonav::app

@@ -39,8 +39,6 @@ constexpr const char* kUsage =
     "outputs written; 1 no frame could be mapped (outputs hold an empty map) or any other\n"
     "error; 2 usage error.\n";
 
-constexpr int kPartialMapStatus = 3;
-
 // Checked before any work, so that a typo in a path does not cost the run.
 void checkWritableFolder(const std::string& folder, const std::string& option) {
   const std::string where = folder.empty() ? "." : folder;
@@ -100,7 +98,7 @@ MapRequest parseMapRequest(CommandLine& command_line) {
 // Progress on a terminal, Ctrl-C or SIGTERM ends the map with what was mapped so far.
 MappingReport mapWithProgress(const MappingOptions& options, const MappingJob& job) {
   std::optional<ProgressMeter> progress;
-  if (isatty(STDERR_FILENO) != 0) progress.emplace(std::cerr, countRawlogFrames(job.rawlog_path, options));
+  if (isatty(STDERR_FILENO) != 0) progress.emplace(std::cerr, "mapping", countRawlogFrames(job.rawlog_path, options));
   SigintStopRequest sigint;
   MappingCallbacks callbacks;
   callbacks.on_frame = [&](size_t frames, const mrpt::maps::CMetricMap&) {
@@ -146,7 +144,7 @@ int runMapCommand(const std::vector<std::string>& arguments) {
     std::cerr << "stereonav map: trajectory error against " << *request.truth_path << ":\n"
               << trajectoryError(report.path, truth).toText();
   }
-  return report.complete() ? 0 : kPartialMapStatus;
+  return report.complete() ? 0 : kPartialWorkStatus;
 }
 
 }  // namespace stereonav::app

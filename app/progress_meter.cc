@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <utility>
 
 namespace stereonav {
 namespace {
@@ -20,8 +21,8 @@ std::string minutesSeconds(double seconds) {
 
 }  // namespace
 
-ProgressMeter::ProgressMeter(std::ostream& out, std::optional<size_t> total)
-    : out_(out), total_(total), start_(std::chrono::steady_clock::now()), last_draw_(start_) {}
+ProgressMeter::ProgressMeter(std::ostream& out, std::string label, std::optional<size_t> total)
+    : out_(out), label_(std::move(label)), total_(total), start_(std::chrono::steady_clock::now()), last_draw_(start_) {}
 
 void ProgressMeter::update(size_t done) {
   const auto now = std::chrono::steady_clock::now();
@@ -45,10 +46,10 @@ void ProgressMeter::draw(size_t done) {
     const int filled = static_cast<int>(fraction * kBarWidth);
     const std::string bar = std::string(filled, '#') + std::string(kBarWidth - filled, '.');
     const std::string eta = rate > 0.0 ? minutesSeconds((*total_ - std::min(done, *total_)) / rate) : "?";
-    std::snprintf(line, sizeof line, "\rmapping [%s] %zu/%zu %3.0f%%  %.1f frames/s  ETA %s  ",
-                  bar.c_str(), done, *total_, 100.0 * fraction, rate, eta.c_str());
+    std::snprintf(line, sizeof line, "\r%s [%s] %zu/%zu %3.0f%%  %.1f frames/s  ETA %s  ",
+                  label_.c_str(), bar.c_str(), done, *total_, 100.0 * fraction, rate, eta.c_str());
   } else {
-    std::snprintf(line, sizeof line, "\rmapping %zu frames  %.1f frames/s  ", done, rate);
+    std::snprintf(line, sizeof line, "\r%s %zu frames  %.1f frames/s  ", label_.c_str(), done, rate);
   }
   out_ << line << std::flush;
 }

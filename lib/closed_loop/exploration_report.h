@@ -25,6 +25,7 @@ struct ExplorationReport {
   std::vector<CollisionEvent> collision_events;
   int blocked_reversals = 0;    // times the explorer found itself blocked and reversed
   std::string stop_reason;
+  bool interrupted = false;  // stopped by ExplorationCallbacks::stop_requested
 
   std::string summary() const;
   std::string toJson() const;

@@ -131,9 +131,18 @@ void fillFromSimulation(ExplorationReport& report, const Simulation& simulation,
   report.collisions = simulation.robot().collisionCount();
 }
 
+// <prefix>.path.png: the map with the path; <prefix>.plan.png: the explorer's last plan, if any.
+void savePathAndPlanImages(const DisparityTaggedGrid& grid, const std::vector<mrpt::poses::CPose2D>& map_path,
+                           const FrontierExplorer& explorer, const std::string& prefix) {
+  savePathImage(grid, map_path, prefix + ".path.png");
+  const cv::Mat3b plan = explorer.planImage();
+  if (!plan.empty()) saveImage(plan, prefix + ".plan.png");
+}
+
 }  // namespace
 
-ExplorationReport runExploration(const World& world, const ExplorationConfig& config, const ExplorationJob& job) {
+ExplorationReport runExploration(const World& world, const ExplorationConfig& config, const ExplorationJob& job,
+                                 const ExplorationCallbacks& callbacks) {
   const auto wall_start = std::chrono::steady_clock::now();
   SensorOptions sensor = config.simulator.sensor;
   DifferentialDriveOptions robot_options = config.simulator.robot;
@@ -145,6 +154,8 @@ ExplorationReport runExploration(const World& world, const ExplorationConfig& co
     start = seededStart(world, truth, robot_options.radius_m, *job.seed);
   }
   const double max_time = job.max_time_s.value_or(config.simulator.simulation.max_duration_s);
+  const size_t frame_limit =
+      static_cast<size_t>(std::floor(max_time * config.simulator.simulation.frame_rate_hz)) + 1;
 
   Simulation simulation(world, config.simulator.rig, sensor, robot_options, config.simulator.simulation, start);
   FrontierExplorer explorer(config.explorer);
@@ -163,6 +174,12 @@ ExplorationReport runExploration(const World& world, const ExplorationConfig& co
       map_path.push_back(mapper.process(frame));
       trace.append(frame, map_path.back(), simulation.robot(), robot_interface, explorer.status(),
                    robot_options.radius_m);
+      if (callbacks.on_frame) callbacks.on_frame(map_path.size(), frame_limit);
+    }
+    if (callbacks.stop_requested && callbacks.stop_requested()) {
+      report.stop_reason = "interrupted";
+      report.interrupted = true;
+      break;
     }
     if (simulation.timeUp(max_time)) {
       report.stop_reason = "time limit of " + std::to_string(static_cast<int>(max_time)) + " s reached";
@@ -182,9 +199,7 @@ ExplorationReport runExploration(const World& world, const ExplorationConfig& co
   report.coverage = measureCoverage(truth, grid, robot_options.radius_m, start.x(), start.y());
   saveMapOutputs(mapper.mapper().map(), config.mapping.grid.stereo.update.scale, map_path, job.output_prefix);
   trace.save(job.output_prefix);
-  savePathImage(grid, map_path, job.output_prefix + ".path.png");
-  const cv::Mat3b plan = explorer.planImage();
-  if (!plan.empty()) saveImage(plan, job.output_prefix + ".plan.png");
+  savePathAndPlanImages(grid, map_path, explorer, job.output_prefix);
   report.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   writeStringAtomically(job.output_prefix + ".stats.json", report.toJson());
   return report;

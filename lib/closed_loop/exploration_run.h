@@ -1,5 +1,7 @@
 #pragma once
 
+#include <cstddef>
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -25,9 +27,17 @@ struct ExplorationJob {
   std::optional<int> seed;
 };
 
+// Called from the loop: after each frame is mapped (frames so far, the total the time limit
+// allows), and asked whether to stop early (the outputs are written as at the time limit).
+struct ExplorationCallbacks {
+  std::function<void(size_t frames, size_t frame_limit)> on_frame;
+  std::function<bool()> stop_requested;
+};
+
 // The closed loop (paper section 5): the simulation (simulator/simulation.h) renders a frame,
 // the mapping pipeline adds it to the map, the explorer plans on the new map; between frames the
 // explorer commands the simulated robot through MRPT's navigator interface every control period.
-ExplorationReport runExploration(const World& world, const ExplorationConfig& config, const ExplorationJob& job);
+ExplorationReport runExploration(const World& world, const ExplorationConfig& config, const ExplorationJob& job,
+                                 const ExplorationCallbacks& callbacks = {});
 
 }  // namespace stereonav

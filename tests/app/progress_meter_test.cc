@@ -12,10 +12,10 @@ namespace {
 
 TEST(ProgressMeterTest, FinalLineShowsCountPercentageAndEndsTheLine) {
   std::ostringstream out;
-  ProgressMeter meter(out, 60);
+  ProgressMeter meter(out, "exploring", 60);
   meter.finish(30);
   const std::string text = out.str();
-  EXPECT_EQ(text.front(), '\r');  // redrawn in place
+  EXPECT_EQ(text.rfind("\rexploring [", 0), 0u) << text;  // redrawn in place, the work named
   EXPECT_NE(text.find("30/60"), std::string::npos) << text;
   EXPECT_NE(text.find(" 50%"), std::string::npos) << text;
   EXPECT_NE(text.find("[############............]"), std::string::npos) << text;
@@ -25,7 +25,7 @@ TEST(ProgressMeterTest, FinalLineShowsCountPercentageAndEndsTheLine) {
 
 TEST(ProgressMeterTest, WithoutATotalShowsCountAndRateOnly) {
   std::ostringstream out;
-  ProgressMeter meter(out, std::nullopt);
+  ProgressMeter meter(out, "mapping", std::nullopt);
   meter.finish(12);
   EXPECT_NE(out.str().find("12 frames"), std::string::npos) << out.str();
   EXPECT_EQ(out.str().find("ETA"), std::string::npos) << out.str();
@@ -33,7 +33,7 @@ TEST(ProgressMeterTest, WithoutATotalShowsCountAndRateOnly) {
 
 TEST(ProgressMeterTest, UpdatesAreThrottled) {
   std::ostringstream out;
-  ProgressMeter meter(out, 1000);
+  ProgressMeter meter(out, "mapping", 1000);
   for (size_t i = 0; i < 1000; ++i) meter.update(i);  // well within 100 ms
   EXPECT_EQ(out.str(), "");
 }

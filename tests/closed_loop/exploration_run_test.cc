@@ -91,6 +91,40 @@ TEST(ExplorationRunTest, ExploresASmallRoomWithoutCollisionAndTheRecordedRunRepl
   EXPECT_EQ(readFile(replay.output_prefix + ".pgm"), explored_map);
 }
 
+TEST(ExplorationRunTest, StopRequestEndsTheRunWithEveryOutputWrittenAndProgressCountsFrames) {
+  const World world = loadWorld(mrpt::config::CConfigFileMemory(kRoom), "room.ini");
+  const ExplorationConfig config = loadExplorationConfig(testing::shippedExplorationConfigPath());
+  ASSERT_EQ(config.simulator.simulation.frame_rate_hz, 5.0);
+  const std::string directory = outputDirectory("stopped");
+  ExplorationJob job;
+  job.output_prefix = directory + "/room";
+  job.record_rawlog = directory + "/room.rawlog";
+  job.max_time_s = 60.0;
+  std::vector<size_t> frames_seen;
+  size_t frame_limit = 0;
+  ExplorationCallbacks callbacks;
+  callbacks.on_frame = [&](size_t frames, size_t limit) {
+    frames_seen.push_back(frames);
+    frame_limit = limit;
+  };
+  callbacks.stop_requested = [&] { return frames_seen.size() == 4; };
+  const ExplorationReport report = runExploration(world, config, job, callbacks);
+
+  EXPECT_TRUE(report.interrupted);
+  EXPECT_EQ(report.stop_reason, "interrupted");
+  EXPECT_EQ(frames_seen, (std::vector<size_t>{1, 2, 3, 4}));
+  EXPECT_EQ(frame_limit, 301u);  // frames at t = 0, 0.2, ..., 60 s
+  EXPECT_EQ(report.frames, 4u);
+  for (const char* suffix : {".gridmap", ".png", ".path.png", ".path.txt", ".stats.json"}) {
+    EXPECT_TRUE(std::filesystem::exists(job.output_prefix + suffix)) << suffix;
+  }
+  // The recorded rawlog is complete up to the stop: it replays all four frames.
+  MappingJob replay;
+  replay.rawlog_path = job.record_rawlog;
+  replay.output_prefix = directory + "/replay";
+  EXPECT_EQ(mapRawlog(config.mapping, replay).frames_mapped, 4u);
+}
+
 TEST(ExplorationRunTest, ConfigErrorsNameTheFileSectionAndKey) {
   const std::string directory = outputDirectory("config");
   std::string text = readFile(testing::shippedExplorationConfigPath());
