@@ -18,7 +18,6 @@ int runExploreCommand(const std::vector<std::string>& arguments);
 int runScoreCommand(const std::vector<std::string>& arguments);
 int runReportCommand(const std::vector<std::string>& arguments);
 int runConfigCommand(const std::vector<std::string>& arguments);
-int runImportKittiCommand(const std::vector<std::string>& arguments);
 int runConvertCommand(const std::vector<std::string>& arguments);
 int runCalibrateCommand(const std::vector<std::string>& arguments);
 

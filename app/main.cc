@@ -35,8 +35,6 @@ const Command kCommands[] = {
      stereonav::app::runReportCommand},
     {"config", "print every ini section and key the commands accept (docs/configuration.md's skeleton)",
      stereonav::app::runConfigCommand},
-    {"import-kitti", "convert a KITTI odometry sequence into a rawlog with odometry and true poses",
-     stereonav::app::runImportKittiCommand},
     {"calibrate", "calibrate a stereo pair from chessboard image pairs (OpenCV YAML out)",
      stereonav::app::runCalibrateCommand},
     {"convert", "convert a EuRoC or KITTI stereo dataset into a rawlog",

@@ -23,20 +23,6 @@ cv::Mat readGrey(const std::string& path) {
   return image;
 }
 
-std::vector<double> numbersOf(const std::string& line) {
-  std::istringstream fields(line);
-  std::vector<double> numbers;
-  std::string field;
-  while (fields >> field) {
-    try {
-      numbers.push_back(std::stod(field));
-    } catch (const std::logic_error&) {
-      // a "P0:" key in front of the numbers
-    }
-  }
-  return numbers;
-}
-
 }  // namespace
 
 size_t convertEuroc(const std::string& dataset, RawlogWriter& writer,
@@ -90,52 +76,14 @@ size_t convertEuroc(const std::string& dataset, RawlogWriter& writer,
   return frames;
 }
 
-size_t convertKitti(const std::string& dataset, RawlogWriter& writer,
+size_t convertKitti(const KittiSequence& sequence, const OdometryError& error, RawlogWriter& writer,
                     const std::function<void(size_t)>& on_frame) {
-  const std::string calib_path = dataset + "/calib.txt";
-  std::ifstream calib(calib_path);
-  if (!calib) throw std::runtime_error(calib_path + ": cannot read");
-  std::vector<std::vector<double>> projections;
-  for (std::string line; std::getline(calib, line) && projections.size() < 2;) {
-    std::vector<double> numbers = numbersOf(line);
-    if (numbers.size() >= 12) projections.push_back(numbers);
+  const std::vector<mrpt::poses::CPose2D> odometry = odometryWithError(sequence.poses, error);
+  for (size_t i = 0; i < sequence.frames; ++i) {
+    writer.write(kittiFrame(sequence, i, i < odometry.size() ? std::optional(odometry[i]) : std::nullopt));
+    if (on_frame) on_frame(i + 1);
   }
-  if (projections.size() < 2 || !(projections[0][0] > 0)) {
-    throw std::runtime_error(calib_path + ": expected two 3x4 projection matrices (left, right)");
-  }
-  const double baseline = (projections[0][3] - projections[1][3]) / projections[0][0];
-  if (!(baseline > 0)) throw std::runtime_error(calib_path + ": right camera not to the right");
-  const PinholeCamera camera{0, 0, projections[0][0], projections[0][2], projections[0][6]};
-  const CameraRig rig{camera, baseline, {SecondaryCamera{1.0, 0.0}},
-                      CameraRig::opticalPoseOnRobot(0, 0, 1.65, 0, 0)};
-
-  std::string left_dir = dataset + "/image_l", right_dir = dataset + "/image_r";
-  if (!fs::is_directory(left_dir)) left_dir = dataset + "/image_0", right_dir = dataset + "/image_1";
-  std::ifstream poses(dataset + "/poses.txt");
-  size_t frames = 0;
-  for (;; ++frames) {
-    char name[16];
-    std::snprintf(name, sizeof name, "/%06zu.png", frames);
-    if (!fs::exists(left_dir + name)) break;
-    RigFrame frame{mrpt::Clock::fromDouble(0.1 * static_cast<double>(frames)),
-                   readGrey(left_dir + name), {readGrey(right_dir + name)}, rig, std::nullopt};
-    frame.rig.reference.width = frame.reference.cols;
-    frame.rig.reference.height = frame.reference.rows;
-    std::string line;
-    if (poses && std::getline(poses, line)) {
-      const std::vector<double> m = numbersOf(line);
-      if (m.size() != 12) {
-        throw std::runtime_error(dataset + "/poses.txt:" + std::to_string(frames + 1) +
-                                 ": expected 12 numbers");
-      }
-      // Camera x right, z forward -> robot x forward, y left; heading = the camera's z axis.
-      frame.odometry = mrpt::poses::CPose2D(m[11], -m[3], std::atan2(-m[2], m[10]));
-    }
-    writer.write(frame);
-    if (on_frame) on_frame(frames + 1);
-  }
-  if (frames == 0) throw std::runtime_error(left_dir + ": no 000000.png");
-  return frames;
+  return sequence.frames;
 }
 
 }  // namespace stereonav

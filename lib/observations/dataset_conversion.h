@@ -3,6 +3,7 @@
 #include <functional>
 #include <string>
 
+#include "observations/kitti_sequence.h"
 #include "observations/rawlog_writer.h"
 
 namespace stereonav {
@@ -20,11 +21,9 @@ namespace stereonav {
 size_t convertEuroc(const std::string& dataset, RawlogWriter& writer,
                     const std::function<void(size_t)>& on_frame = {});
 
-// KITTI odometry (calib.txt with P0/P1 projection matrices, image_l/, image_r/ (or image_0/,
-// image_1/) numbered PNGs, optional poses.txt): the rectified pair, 10 Hz, mounted level 1.65 m
-// up; poses.txt (the left camera in the first frame's camera coordinates) becomes the robot's
-// odometry in the ground plane.
-size_t convertKitti(const std::string& dataset, RawlogWriter& writer,
+// A KITTI odometry sequence (kitti_sequence.h): the rectified pair at 10 Hz; its true poses,
+// when it has them, become the robot's odometry with `error` added (none by default).
+size_t convertKitti(const KittiSequence& sequence, const OdometryError& error, RawlogWriter& writer,
                     const std::function<void(size_t)>& on_frame = {});
 
 }  // namespace stereonav

@@ -1,12 +1,15 @@
 #include "observations/kitti_sequence.h"
 
+#include <mrpt/core/bits_math.h>
 #include <mrpt/system/datetime.h>
 
 #include <opencv2/imgcodecs.hpp>
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
+#include <random>
 #include <sstream>
 #include <stdexcept>
 
@@ -37,9 +40,9 @@ std::vector<std::vector<double>> readRows(const std::string& path, size_t fields
   return rows;
 }
 
-std::string imagePath(const std::string& directory, const char* camera, size_t index) {
+std::string imagePath(const std::string& directory, size_t index) {
   char name[32];
-  std::snprintf(name, sizeof name, "/%s/%06zu.png", camera, index);
+  std::snprintf(name, sizeof name, "/%06zu.png", index);
   return directory + name;
 }
 
@@ -47,13 +50,16 @@ std::string imagePath(const std::string& directory, const char* camera, size_t i
 
 KittiSequence loadKittiSequence(const std::string& directory, double camera_height_m) {
   KittiSequence sequence;
-  sequence.directory = directory;
   const auto calibration = readRows(directory + "/calib.txt", 12);
   if (calibration.size() < 2) throw std::runtime_error(directory + "/calib.txt: expected two cameras");
   const std::vector<double>& left = calibration[0];
   const std::vector<double>& right = calibration[1];
-  const cv::Mat first = cv::imread(imagePath(directory, "image_l", 0), cv::IMREAD_GRAYSCALE);
-  if (first.empty()) throw std::runtime_error(imagePath(directory, "image_l", 0) + ": cannot read");
+  const bool kitti_names = !std::filesystem::is_directory(directory + "/image_l");
+  sequence.left_directory = directory + (kitti_names ? "/image_0" : "/image_l");
+  sequence.right_directory = directory + (kitti_names ? "/image_1" : "/image_r");
+  const cv::Mat first = cv::imread(imagePath(sequence.left_directory, 0), cv::IMREAD_GRAYSCALE);
+  if (first.empty()) throw std::runtime_error(imagePath(sequence.left_directory, 0) + ": cannot read");
+  while (std::filesystem::exists(imagePath(sequence.left_directory, sequence.frames))) ++sequence.frames;
   CameraRig& rig = sequence.rig;
   rig.reference = {first.cols, first.rows, left[0], left[2], left[6]};
   // The right projection's fourth entry is -f B (KITTI's convention).
@@ -62,7 +68,9 @@ KittiSequence loadKittiSequence(const std::string& directory, double camera_heig
   rig.secondaries = {{1.0, 0.0}};
   rig.pose_on_robot = CameraRig::opticalPoseOnRobot(0.0, 0.0, camera_height_m, 0.0, 0.0);
 
-  for (const std::vector<double>& pose : readRows(directory + "/poses.txt", 12)) {
+  const std::string poses_path = directory + "/poses.txt";
+  if (!std::filesystem::exists(poses_path)) return sequence;
+  for (const std::vector<double>& pose : readRows(poses_path, 12)) {
     // Camera x right, y down, z forward -> robot x forward (z), y left (-x); the heading is that
     // of the optical axis (the rotation's third column) on the floor.
     sequence.poses.emplace_back(pose[11], -pose[3], std::atan2(-pose[2], pose[10]));
@@ -71,19 +79,39 @@ KittiSequence loadKittiSequence(const std::string& directory, double camera_heig
 }
 
 RigFrame kittiFrame(const KittiSequence& sequence, size_t index,
-                    const mrpt::poses::CPose2D& odometry) {
+                    const std::optional<mrpt::poses::CPose2D>& odometry) {
   RigFrame frame;
   frame.timestamp = mrpt::Clock::fromDouble(static_cast<double>(index) / kFrameRateHz);
   frame.rig = sequence.rig;
-  frame.reference = cv::imread(imagePath(sequence.directory, "image_l", index), cv::IMREAD_GRAYSCALE);
-  const cv::Mat right = cv::imread(imagePath(sequence.directory, "image_r", index), cv::IMREAD_GRAYSCALE);
+  const std::string left_path = imagePath(sequence.left_directory, index);
+  const std::string right_path = imagePath(sequence.right_directory, index);
+  frame.reference = cv::imread(left_path, cv::IMREAD_GRAYSCALE);
+  const cv::Mat right = cv::imread(right_path, cv::IMREAD_GRAYSCALE);
   if (frame.reference.empty() || right.empty()) {
-    throw std::runtime_error(imagePath(sequence.directory, frame.reference.empty() ? "image_l" : "image_r", index) +
-                             ": cannot read");
+    throw std::runtime_error((frame.reference.empty() ? left_path : right_path) + ": cannot read");
   }
   frame.secondaries = {right};
   frame.odometry = odometry;
   return frame;
+}
+
+std::vector<mrpt::poses::CPose2D> odometryWithError(const std::vector<mrpt::poses::CPose2D>& truth,
+                                                    const OdometryError& error) {
+  std::vector<mrpt::poses::CPose2D> odometry;
+  if (truth.empty()) return odometry;
+  std::mt19937 random(error.seed);
+  std::normal_distribution<double> unit(0.0, 1.0);
+  odometry.push_back(truth.front());
+  for (size_t i = 1; i < truth.size(); ++i) {
+    const mrpt::poses::CPose2D step = truth[i] - truth[i - 1];
+    const double distance = step.norm();
+    odometry.push_back(odometry.back() +
+                       mrpt::poses::CPose2D(step.x() * (1.0 + error.distance_bias),
+                                            step.y() * (1.0 + error.distance_bias),
+                                            step.phi() + mrpt::DEG2RAD(error.drift_deg_per_m) * distance *
+                                                             unit(random)));
+  }
+  return odometry;
 }
 
 }  // namespace stereonav

@@ -11,8 +11,9 @@
 namespace stereonav {
 namespace {
 
-const std::string kEuroc = "/work/shared/data/euroc-v1-01-clip";
-const std::string kKitti = "/work/shared/data/kitti-odometry-excerpt";
+// Not shipped (their licences): read from ../shared beside the project, skipped when absent.
+const std::string kEuroc = std::string(STEREONAV_SHARED_DATA_DIR) + "/euroc-v1-01-clip";
+const std::string kKitti = std::string(STEREONAV_SHARED_DATA_DIR) + "/kitti-odometry-excerpt";
 
 std::vector<RigFrame> readBack(const std::string& path, SkippedFrames* skipped = nullptr) {
   RawlogReader reader(path, {});
@@ -57,7 +58,7 @@ TEST(DatasetConversionTest, KittiExcerptKeepsItsRectifiedPairAndPosesAsOdometry)
   RawlogWriterOptions options;
   options.sensor_label = "KITTI";
   RawlogWriter writer(path, options);
-  EXPECT_EQ(convertKitti(kKitti, writer), 51u);
+  EXPECT_EQ(convertKitti(loadKittiSequence(kKitti, 1.65), {}, writer), 51u);
   writer.finish();
   const std::vector<RigFrame> frames = readBack(path);
   ASSERT_EQ(frames.size(), 51u);

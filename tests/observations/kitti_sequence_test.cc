@@ -1,5 +1,7 @@
 #include "observations/kitti_sequence.h"
 
+#include <mrpt/core/bits_math.h>
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -14,7 +16,7 @@ namespace {
 std::string excerptDirectory() {
   const char* directory = std::getenv("STEREONAV_KITTI_EXCERPT");
   return directory ? directory
-                   : std::string(STEREONAV_SOURCE_DIR) + "/../shared/data/kitti-odometry-excerpt";
+                   : std::string(STEREONAV_SHARED_DATA_DIR) + "/kitti-odometry-excerpt";
 }
 
 TEST(KittiSequenceTest, ReadsTheExcerptsRigAndPoses) {
@@ -45,6 +47,32 @@ TEST(KittiSequenceTest, ReadsTheExcerptsRigAndPoses) {
   ASSERT_EQ(frame.secondaries.size(), 1u);
   EXPECT_NO_THROW(checkRigFrame(frame));
   EXPECT_NEAR(mrpt::Clock::toDouble(frame.timestamp), 5.0, 1e-6);
+}
+
+TEST(KittiSequenceTest, OdometryErrorScalesDistancesAndDriftsTheHeadingFromItsSeed) {
+  // A hand-made L: 2 m east, a quarter turn, 1 m north.
+  const std::vector<mrpt::poses::CPose2D> truth{
+      {0, 0, 0}, {1, 0, 0}, {2, 0, M_PI / 2}, {2, 1, M_PI / 2}};
+  const std::vector<mrpt::poses::CPose2D> exact = odometryWithError(truth, {});
+  ASSERT_EQ(exact.size(), truth.size());
+  for (size_t i = 0; i < truth.size(); ++i) EXPECT_NEAR((exact[i] - truth[i]).norm(), 0.0, 1e-12) << i;
+
+  OdometryError bias;
+  bias.distance_bias = 0.1;  // every step 10% long, the turn kept
+  const std::vector<mrpt::poses::CPose2D> long_steps = odometryWithError(truth, bias);
+  EXPECT_NEAR(long_steps[3].x(), 2.2, 1e-12);
+  EXPECT_NEAR(long_steps[3].y(), 1.1, 1e-12);
+  EXPECT_NEAR(long_steps[3].phi(), M_PI / 2, 1e-12);
+
+  OdometryError drift;
+  drift.drift_deg_per_m = 2.0;
+  drift.seed = 7;
+  const std::vector<mrpt::poses::CPose2D> drifted = odometryWithError(truth, drift);
+  EXPECT_GT(std::abs(drifted[3].phi() - M_PI / 2), 1e-6);           // the heading drifts
+  EXPECT_LT(std::abs(drifted[3].phi() - M_PI / 2), mrpt::DEG2RAD(2.0 * 3 * 5));  // within 5 sigma
+  EXPECT_NEAR(drifted[1].norm(), 1.0, 1e-12);  // a distance is kept
+  const std::vector<mrpt::poses::CPose2D> again = odometryWithError(truth, drift);
+  EXPECT_DOUBLE_EQ(again[3].phi(), drifted[3].phi());  // the same seed, the same drift
 }
 
 TEST(KittiSequenceTest, AMissingSequenceIsNamed) {

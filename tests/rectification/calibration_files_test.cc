@@ -140,7 +140,7 @@ TEST_F(CalibrationFilesTest, MrptStereoCameraIni) {
 }
 
 TEST_F(CalibrationFilesTest, EurocSensorYamlOfTheClip) {
-  const std::string clip = "/work/shared/data/euroc-v1-01-clip";
+  const std::string clip = std::string(STEREONAV_SHARED_DATA_DIR) + "/euroc-v1-01-clip";
   if (!std::filesystem::exists(clip + "/cam0/sensor.yaml")) {
     GTEST_SKIP() << clip << " is absent (the EuRoC clip is not part of the project)";
   }

@@ -22,7 +22,7 @@ namespace stereonav {
 namespace {
 
 const std::string kOpenCvData = "/usr/share/doc/opencv-doc/examples/data";
-const std::string kEuroc = "/work/shared/data/euroc-v1-01-clip";
+const std::string kEuroc = std::string(STEREONAV_SHARED_DATA_DIR) + "/euroc-v1-01-clip";
 
 struct RowErrors {
   double median = 0.0, p95 = 0.0, worst = 0.0;
