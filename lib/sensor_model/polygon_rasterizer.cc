@@ -20,6 +20,71 @@ inline int firstCellFrom(double u) {
   return static_cast<int>(kIndexRange) - static_cast<int>(kIndexRange + 0.5 - u);
 }
 
+// The crossings are bucketed by row, edge by edge, rather than found row by row from a list of
+// active edges kept sorted by v_low: no sort of the edges, and each edge's crossings come from
+// one tight loop. First each row's count (+1 where an edge starts, -1 where it ends, summed),
+// then where each row's crossings start. Afterwards row r's crossings are
+// [offsets[r - 1], offsets[r]) (row_begin's from 0).
+void bucketCrossingsByRow(const std::vector<ScanEdge>& edges, int row_begin, int row_end,
+                          PolygonScanScratch& storage) {
+  std::vector<int>& offsets = storage.row_offsets;
+  offsets.assign(static_cast<size_t>(row_end - row_begin) + 1, 0);
+  for (const ScanEdge& edge : edges) {
+    const int first = std::max(firstCellFrom(edge.v_low), row_begin);
+    const int end = std::min(firstCellFrom(edge.v_high), row_end);
+    if (first >= end) continue;
+    ++offsets[first - row_begin];
+    --offsets[end - row_begin];
+  }
+  int active = 0, total = 0;
+  for (int& offset : offsets) {
+    active += offset;
+    offset = total;
+    total += active;
+  }
+  std::vector<PolygonScanScratch::Crossing>& crossings = storage.crossings;
+  if (crossings.size() < static_cast<size_t>(total)) crossings.resize(2 * total);
+  // offsets[r] counts up as row r's crossings are filled in, ending where row r + 1 starts.
+  for (const ScanEdge& edge : edges) {
+    const int first = std::max(firstCellFrom(edge.v_low), row_begin);
+    const int end = std::min(firstCellFrom(edge.v_high), row_end);
+    double v = first + 0.5;  // stays exact
+    for (int row = first; row < end; ++row, v += 1.0) {
+      crossings[offsets[row - row_begin]++] = {
+          std::clamp(edge.line.uAt(v), edge.u_low, edge.u_high), edge.winding};
+    }
+  }
+}
+
+// One row's spans from its crossings: inside where the winding number is positive.
+void appendRowSpans(PolygonScanScratch::Crossing* first, PolygonScanScratch::Crossing* last, int row,
+                    const CellWindow& window, CellSpanBuffer& spans) {
+  // Usually two crossings; a frontier running along the row (a wall seen at a grazing angle)
+  // can bring a hundred.
+  if (last - first == 2) {
+    if (first[1].u < first[0].u) std::swap(first[0], first[1]);
+  } else {
+    std::sort(first, last, [](const PolygonScanScratch::Crossing& a,
+                              const PolygonScanScratch::Crossing& b) { return a.u < b.u; });
+  }
+  int winding = 0;
+  double entered = 0.0;
+  for (const PolygonScanScratch::Crossing* crossing = first; crossing != last; ++crossing) {
+    const int before = winding;
+    winding += crossing->winding;
+    if (before <= 0 && winding > 0) entered = crossing->u;
+    if (before > 0 && winding <= 0) {
+      const int col_begin = std::max(firstCellFrom(entered), window.col_begin);
+      const int col_end = std::min(firstCellFrom(crossing->u), window.col_end);
+      if (col_end > col_begin) {
+        CellSpan* out = spans.room(1);
+        *out = {row, col_begin, col_end};
+        spans.commit(out + 1);
+      }
+    }
+  }
+}
+
 }  // namespace
 
 void appendCellSpans(const ConvexPolygon& polygon, CellSpanBuffer& spans,
@@ -93,68 +158,13 @@ void appendPolygonSpans(const std::vector<ScanEdge>& edges, CellSpanBuffer& span
   row_end = std::min(row_end, window.row_end);
   if (row_end <= row_begin) return;
 
-  // The crossings are bucketed by row, edge by edge, rather than found row by row from a list of
-  // active edges kept sorted by v_low: no sort of the edges, and each edge's crossings come from
-  // one tight loop. First each row's count (+1 where an edge starts, -1 where it ends, summed),
-  // then where each row's crossings start.
-  std::vector<int>& offsets = storage.row_offsets;
-  offsets.assign(static_cast<size_t>(row_end - row_begin) + 1, 0);
-  for (const ScanEdge& edge : edges) {
-    const int first = std::max(firstCellFrom(edge.v_low), row_begin);
-    const int end = std::min(firstCellFrom(edge.v_high), row_end);
-    if (first >= end) continue;
-    ++offsets[first - row_begin];
-    --offsets[end - row_begin];
-  }
-  int active = 0, total = 0;
-  for (int& offset : offsets) {
-    active += offset;
-    offset = total;
-    total += active;
-  }
-  std::vector<PolygonScanScratch::Crossing>& crossings = storage.crossings;
-  if (crossings.size() < static_cast<size_t>(total)) crossings.resize(2 * total);
-  // offsets[r] now counts up as row r's crossings are filled in; afterwards it is where row r + 1
-  // starts, so row r's crossings are [offsets[r - 1], offsets[r]).
-  for (const ScanEdge& edge : edges) {
-    const int first = std::max(firstCellFrom(edge.v_low), row_begin);
-    const int end = std::min(firstCellFrom(edge.v_high), row_end);
-    double v = first + 0.5;  // stays exact
-    for (int row = first; row < end; ++row, v += 1.0) {
-      crossings[offsets[row - row_begin]++] = {
-          std::clamp(edge.line.uAt(v), edge.u_low, edge.u_high), edge.winding};
-    }
-  }
-
+  bucketCrossingsByRow(edges, row_begin, row_end, storage);
   int row_first = 0;
   for (int row = row_begin; row < row_end; ++row) {
-    PolygonScanScratch::Crossing* first = crossings.data() + row_first;
-    PolygonScanScratch::Crossing* last = crossings.data() + offsets[row - row_begin];
-    row_first = offsets[row - row_begin];
-    // Usually two crossings; a frontier running along the row (a wall seen at a grazing angle)
-    // can bring a hundred.
-    if (last - first == 2) {
-      if (first[1].u < first[0].u) std::swap(first[0], first[1]);
-    } else {
-      std::sort(first, last, [](const PolygonScanScratch::Crossing& a,
-                                const PolygonScanScratch::Crossing& b) { return a.u < b.u; });
-    }
-    int winding = 0;
-    double entered = 0.0;
-    for (const PolygonScanScratch::Crossing* crossing = first; crossing != last; ++crossing) {
-      const int before = winding;
-      winding += crossing->winding;
-      if (before <= 0 && winding > 0) entered = crossing->u;
-      if (before > 0 && winding <= 0) {
-        const int col_begin = std::max(firstCellFrom(entered), window.col_begin);
-        const int col_end = std::min(firstCellFrom(crossing->u), window.col_end);
-        if (col_end > col_begin) {
-          CellSpan* out = spans.room(1);
-          *out = {row, col_begin, col_end};
-          spans.commit(out + 1);
-        }
-      }
-    }
+    const int row_last = storage.row_offsets[row - row_begin];
+    appendRowSpans(storage.crossings.data() + row_first, storage.crossings.data() + row_last, row,
+                   window, spans);
+    row_first = row_last;
   }
 }
 
