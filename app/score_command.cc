@@ -6,7 +6,7 @@
 #include "commands.h"
 #include "common/ini_section.h"
 #include "evaluation/map_score.h"
-#include "evaluation/ros_map.h"
+#include "occupancy_grid/ros_map.h"
 #include "evaluation/score_overlay.h"
 #include "evaluation/trajectory_error.h"
 #include "mapping/rawlog_mapping.h"

@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 #include <stdexcept>
 
@@ -53,6 +54,22 @@ void loadEmptyExplorationConfig() {
   std::filesystem::remove(path);
 }
 
+// A floor plan needs its map file: a one-cell free map in a temporary folder.
+void loadProbeFloorPlan() {
+  std::string folder = (std::filesystem::temp_directory_path() / "stereonav_plan_XXXXXX").string();
+  if (mkdtemp(folder.data()) == nullptr) throw std::runtime_error(folder + ": cannot create a temporary folder");
+  try {
+    std::ofstream(folder + "/plan.pgm", std::ios::binary) << "P5\n1 1\n255\n" << '\xfe';
+    std::ofstream(folder + "/plan.yaml") << "image: plan.pgm\nresolution: 1\norigin: [0, 0, 0]\n";
+    loadWorld(mrpt::config::CConfigFileMemory("[floor_plan.<name>]\nmap = " + folder + "/plan.yaml\n"),
+              "the probe floor plan");
+  } catch (...) {
+    std::filesystem::remove_all(folder);
+    throw;
+  }
+  std::filesystem::remove_all(folder);
+}
+
 }  // namespace
 
 IniKeyRecorder::Sections acceptedConfigKeys() {
@@ -63,6 +80,7 @@ IniKeyRecorder::Sections acceptedConfigKeys() {
   CStereoOccupancyGridMap::TMapDefinition map_definition;
   map_definition.loadFromConfigFile(empty, "<map>");
   loadWorld(mrpt::config::CConfigFileMemory(kProbeWorld), "the probe world");
+  loadProbeFloorPlan();
   return recorder.sections();
 }
 

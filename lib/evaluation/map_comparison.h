@@ -3,7 +3,7 @@
 #include <opencv2/core.hpp>
 
 #include "evaluation/map_score.h"
-#include "evaluation/ros_map.h"
+#include "occupancy_grid/ros_map.h"
 
 namespace stereonav {
 

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "evaluation/map_score.h"
-#include "evaluation/ros_map.h"
+#include "occupancy_grid/ros_map.h"
 
 namespace stereonav {
 

@@ -6,7 +6,7 @@
 
 #include <vector>
 
-#include "evaluation/ros_map.h"
+#include "occupancy_grid/ros_map.h"
 
 namespace stereonav {
 

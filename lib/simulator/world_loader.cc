@@ -5,10 +5,14 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <map>
+#include <random>
+#include <utility>
 
 #include "common/ini_section.h"
+#include "occupancy_grid/ros_map.h"
 #include "simulator/number_list.h"
 
 namespace stereonav {
@@ -16,9 +20,43 @@ namespace {
 
 constexpr const char* kDefaultTexture = "default";
 
+// Cells [row_begin, row_end) x [col_begin, col_end) of a map.
+struct CellRectangle {
+  int row_begin, row_end, col_begin, col_end;
+};
+
+// The occupied cells of `plan` as rectangles: each row's runs of occupied cells, a run merged
+// with the rectangle above it when that one spans exactly the same columns.
+std::vector<CellRectangle> occupiedRectangles(const RosMap& plan) {
+  std::vector<CellRectangle> done;
+  std::map<std::pair<int, int>, CellRectangle> open;  // by (col_begin, col_end)
+  for (int row = 0; row < plan.height(); ++row) {
+    std::map<std::pair<int, int>, CellRectangle> continued;
+    for (int col = 0; col < plan.width();) {
+      if (plan.cell(col, row) != CellClass::kOccupied) {
+        ++col;
+        continue;
+      }
+      const int begin = col;
+      while (col < plan.width() && plan.cell(col, row) == CellClass::kOccupied) ++col;
+      const auto above = open.find({begin, col});
+      CellRectangle rectangle = above != open.end() ? above->second : CellRectangle{row, row, begin, col};
+      if (above != open.end()) open.erase(above);
+      rectangle.row_end = row + 1;
+      continued[{begin, col}] = rectangle;
+    }
+    for (const auto& entry : open) done.push_back(entry.second);
+    open = std::move(continued);
+  }
+  for (const auto& entry : open) done.push_back(entry.second);
+  return done;
+}
+
 class WorldBuilder {
  public:
-  explicit WorldBuilder(const mrpt::config::CConfigFileBase& config) : config_(config) {}
+  // `directory`: where file names in the world (a floor plan's map) are relative to.
+  WorldBuilder(const mrpt::config::CConfigFileBase& config, std::string directory)
+      : config_(config), directory_(std::move(directory)) {}
 
   World build() {
     std::vector<std::string> sections;
@@ -49,10 +87,12 @@ class WorldBuilder {
         addPicketFence(section);
       } else if (kind == "moving") {
         addMovingObstacle(section);
+      } else if (kind == "floor_plan") {
+        addFloorPlan(section);
       } else {
         throw ConfigError("[" + name +
                           "]: unknown section; expected [world] or [<kind>.<name>] with kind "
-                          "texture, wall, box, cylinder, table, picket_fence or moving");
+                          "texture, wall, box, cylinder, table, picket_fence, moving or floor_plan");
       }
       section.rejectUnknownKeys();
     }
@@ -217,6 +257,48 @@ class WorldBuilder {
                         textureOf(section, "texture")));
   }
 
+  // A ROS map_server floor plan: its occupied cells become walls `height` tall, as boxes over
+  // rectangles of occupied cells (a run along a row, continued over the rows below it while the
+  // same run repeats), so a straight wall is one box. Each box gets `flat_texture` with
+  // probability `flat_share` (drawn from `seed`): walls that stereo cannot match.
+  void addFloorPlan(IniSection& section) {
+    acceptOnly(section, {"map", "height", "texture", "flat_share", "flat_texture", "seed"});
+    const std::string map_file = section.getString("map", "");
+    if (map_file.empty()) fail(section, "map", "missing: the floor plan's map_server YAML");
+    const RosMap plan = loadFloorPlanMap(section, map_file);
+    const double height = positive(section, "height", 2.5);
+    const int texture = textureOf(section, "texture");
+    const double flat_share = section.getDouble("flat_share", 0.0, 0.0, 1.0);
+    if (flat_share > 0.0 && !section.has("flat_texture")) {
+      fail(section, "flat_texture", "missing: flat_share > 0 needs a [texture.<name>] for the flat walls");
+    }
+    const int flat_texture = textureOf(section, "flat_texture");
+    std::mt19937 random(static_cast<std::mt19937::result_type>(section.getInt("seed", 1, 0, 1 << 30)));
+    std::uniform_real_distribution<double> draw(0.0, 1.0);
+    for (const CellRectangle& cells : occupiedRectangles(plan)) {
+      const double r = plan.resolution();
+      addSolid(Solid::box(plan.xMin() + r * (cells.col_begin + cells.col_end) / 2.0,
+                          plan.yMin() + r * (cells.row_begin + cells.row_end) / 2.0,
+                          r * (cells.col_end - cells.col_begin), r * (cells.row_end - cells.row_begin), 0.0,
+                          0.0, height, draw(random) < flat_share ? flat_texture : texture));
+    }
+  }
+
+  RosMap loadFloorPlanMap(const IniSection& section, const std::string& map_file) const {
+    const std::filesystem::path path = std::filesystem::path(directory_) / map_file;
+    try {
+      RosMap plan = loadRosMap(path.string());
+      checkExtent(section, "map", plan.xMin());
+      checkExtent(section, "map", plan.yMin());
+      checkExtent(section, "map", plan.xMin() + plan.resolution() * plan.width());
+      checkExtent(section, "map", plan.yMin() + plan.resolution() * plan.height());
+      return plan;
+    } catch (const std::runtime_error& error) {
+      fail(section, "map", error.what());
+    }
+    return RosMap(1.0, 0.0, 0.0, cv::Mat1b());  // not reached: fail() throws
+  }
+
   void addCylinder(IniSection& section) {
     acceptOnly(section, {"center", "radius", "z", "height", "texture"});
     const auto center = numbers(section, "center", 2);
@@ -347,6 +429,7 @@ class WorldBuilder {
   }
 
   const mrpt::config::CConfigFileBase& config_;
+  std::string directory_;
   World world_;
   std::map<std::string, int> texture_index_;
   std::vector<bool> identical_texture_;
@@ -361,7 +444,7 @@ class WorldBuilder {
 
 World loadWorld(const mrpt::config::CConfigFileBase& config, const std::string& file_name) {
   try {
-    return WorldBuilder(config).build();
+    return WorldBuilder(config, std::filesystem::path(file_name).parent_path().string()).build();
   } catch (const ConfigError& error) {
     throw ConfigError(file_name + ": " + error.what());
   }

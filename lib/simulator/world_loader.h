@@ -53,6 +53,9 @@ namespace stereonav {
 //                    back to the first) at constant speed; not part of the ground-truth map
 //   shape = cylinder | box   radius = 0.25 (cylinder)   size = sx sy (box)   yaw_deg = 0 (box)
 //   height = 1.7   path = x y; x y; ...   speed = 0.5 (m/s)   texture = default
+// [floor_plan.<name>]  a ROS map_server floor plan (YAML + image): occupied cells become walls
+//   map = plan.yaml (relative to the world file)   height = 2.5   texture = default
+//   flat_share = 0 (share of the walls given flat_texture)   flat_texture = <texture>   seed = 1
 World loadWorld(const std::string& path);
 
 // The same from an already opened configuration; `file_name` is only used in error messages.

@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include "evaluation/ros_map.h"
+#include "occupancy_grid/ros_map.h"
 
 namespace stereonav {
 

@@ -7,7 +7,7 @@
 #include <iostream>
 
 #include "evaluation/map_score.h"
-#include "evaluation/ros_map.h"
+#include "occupancy_grid/ros_map.h"
 #include "evaluation/trajectory_error.h"
 #include "mapping/mapping_options.h"
 #include "mapping/rawlog_mapping.h"

@@ -1,4 +1,4 @@
-#include "evaluation/ros_map.h"
+#include "occupancy_grid/ros_map.h"
 
 #include <gtest/gtest.h>
 
