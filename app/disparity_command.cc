@@ -1,4 +1,3 @@
-#include <mrpt/config/CConfigFile.h>
 #include <opencv2/imgcodecs.hpp>
 
 #include <cmath>
@@ -9,6 +8,7 @@
 
 #include "command_line.h"
 #include "commands.h"
+#include "common/ini_section.h"
 #include "disparity/disparity_engine.h"
 #include "disparity/disparity_evaluation.h"
 #include "disparity/disparity_io.h"
@@ -139,7 +139,7 @@ DisparityRequest parseRequest(CommandLine& command_line) {
 }
 
 // The ini's [stereo] section with the command line's values over it.
-StereoOptions loadOptions(const DisparityRequest& request, const mrpt::config::CConfigFile& config) {
+StereoOptions loadOptions(const DisparityRequest& request, const mrpt::config::CConfigFileBase& config) {
   StereoOptions options = loadIniSection(config, "stereo", loadStereoOptions, request.config_path);
   if (request.max_disparity) options.max_disparity = *request.max_disparity;
   if (request.window) options.window = *request.window;
@@ -208,8 +208,7 @@ int runDisparityCommand(const std::vector<std::string>& arguments) {
     return 0;
   }
   const DisparityRequest request = parseRequest(command_line);
-  if (!std::ifstream(request.config_path)) throw std::runtime_error(request.config_path + ": cannot read config file");
-  const mrpt::config::CConfigFile config(request.config_path);
+  const mrpt::config::CConfigFileMemory config = readConfigFile(request.config_path);
   const StereoOptions options = loadOptions(request, config);
   std::optional<SpikeFilter> spike_filter;
   if (request.spike_removal) {

@@ -1,6 +1,4 @@
-#include <mrpt/config/CConfigFile.h>
 
-#include <fstream>
 #include <iostream>
 #include <optional>
 
@@ -42,8 +40,7 @@ int runSimulateCommand(const std::vector<std::string>& arguments) {
   command_line.rejectUnknown();
 
   const World world = loadWorld(world_path);
-  if (!std::ifstream(config_path)) throw ConfigError(config_path + ": cannot open the configuration file");
-  const SimulatorConfig config = loadSimulatorConfig(mrpt::config::CConfigFile(config_path), config_path);
+  const SimulatorConfig config = loadSimulatorConfig(readConfigFile(config_path), config_path);
   const MotionPlan plan = loadMotionPlan(plan_path);
 
   // Built before the run, so that a world too large for its map fails before the work.

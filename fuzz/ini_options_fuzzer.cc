@@ -3,6 +3,7 @@
 #include <mrpt/config/CConfigFileMemory.h>
 
 #include <cstdint>
+#include <optional>
 #include <string>
 
 #include "common/ini_section.h"
@@ -11,7 +12,13 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);
-  mrpt::config::CConfigFileMemory config(text);
+  std::optional<mrpt::config::CConfigFileMemory> parsed;
+  try {
+    parsed.emplace(stereonav::parseConfigText(text, "fuzz.ini"));
+  } catch (const stereonav::ConfigError&) {
+    return 0;
+  }
+  const mrpt::config::CConfigFileMemory& config = *parsed;
   try {
     stereonav::loadMappingOptions(config);
   } catch (const stereonav::ConfigError&) {

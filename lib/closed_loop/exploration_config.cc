@@ -1,14 +1,13 @@
 #include "closed_loop/exploration_config.h"
 
-#include <mrpt/config/CConfigFile.h>
+#include "common/ini_section.h"
 
-#include <fstream>
+
 
 namespace stereonav {
 
 ExplorationConfig loadExplorationConfig(const std::string& path) {
-  if (!std::ifstream(path)) throw ConfigError(path + ": cannot open the configuration file");
-  const mrpt::config::CConfigFile file(path);
+  const mrpt::config::CConfigFileMemory file = readConfigFile(path);
   ExplorationConfig config;
   config.simulator = loadSimulatorConfig(file, path);
   config.explorer = loadIniSection(file, "explorer", [&](IniSection& section) {

@@ -46,8 +46,9 @@ std::string oneLineMessage(const std::string& message) {
     }
     return innermost;
   }
+  // Without a "Message:" line (MRPT's ini parser), the first line that is not the banner.
   for (const std::string& line : lines(message)) {
-    if (!line.empty()) return line;
+    if (!line.empty() && line.rfind("====", 0) != 0) return line;
   }
   return "";
 }

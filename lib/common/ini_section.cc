@@ -1,5 +1,6 @@
 #include "common/ini_section.h"
 
+#include "common/error_text.h"
 #include "common/ini_key_recorder.h"
 
 #include <algorithm>
@@ -7,6 +8,8 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
+#include <sstream>
 #include <vector>
 
 namespace stereonav {
@@ -17,6 +20,22 @@ IniSection::IniSection(const mrpt::config::CConfigFileBase& config, std::string 
 bool IniSection::has(const std::string& key) const {
   if (IniKeyRecorder* recorder = IniKeyRecorder::active()) recorder->record(section_, key, nullptr);
   return config_.keyExists(section_, key);
+}
+
+mrpt::config::CConfigFileMemory parseConfigText(const std::string& text, const std::string& file_name) {
+  try {
+    return mrpt::config::CConfigFileMemory(text);
+  } catch (const std::exception& error) {
+    throw ConfigError(file_name + ": " + oneLineMessage(error.what()));
+  }
+}
+
+mrpt::config::CConfigFileMemory readConfigFile(const std::string& path) {
+  std::ifstream file(path, std::ios::binary);
+  if (!file) throw ConfigError(path + ": cannot open the file");
+  std::ostringstream text;
+  text << file.rdbuf();
+  return parseConfigText(text.str(), path);
 }
 
 namespace {

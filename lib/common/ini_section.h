@@ -1,6 +1,7 @@
 #pragma once
 
 #include <mrpt/config/CConfigFileBase.h>
+#include <mrpt/config/CConfigFileMemory.h>
 
 #include <limits>
 #include <set>
@@ -14,6 +15,14 @@ class ConfigError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
+
+// `text` parsed as MRPT parses an ini file (expanding ${var} and $eval{...}). Throws
+// ConfigError "<file_name>: <MRPT's reason, one line>" when MRPT cannot parse it.
+mrpt::config::CConfigFileMemory parseConfigText(const std::string& text, const std::string& file_name);
+
+// The ini file at `path`, parsed; ConfigError naming the file when it cannot be read or parsed.
+// Every configuration and world file is opened through here.
+mrpt::config::CConfigFileMemory readConfigFile(const std::string& path);
 
 // Reads one section of an MRPT ini file and remembers every key it was asked for, so that after
 // loading, a key the user wrote but nothing reads (a typo) is reported with the nearest known key

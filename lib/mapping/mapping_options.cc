@@ -1,12 +1,11 @@
 #include "mapping/mapping_options.h"
 
-#include <mrpt/config/CConfigFile.h>
 
-#include <fstream>
 #include <iterator>
 #include <sstream>
 #include <stdexcept>
 
+#include "common/ini_section.h"
 #include "observations/rawlog_writer.h"
 #include "rectification/calibration_files.h"
 
@@ -61,9 +60,9 @@ MappingOptions loadMappingOptions(const mrpt::config::CConfigFileBase& config) {
 }
 
 MappingOptions loadMappingOptionsFile(const std::string& path) {
-  if (!std::ifstream(path)) throw std::runtime_error(path + ": cannot read config file");
+  const mrpt::config::CConfigFileMemory config = readConfigFile(path);
   try {
-    return loadMappingOptions(mrpt::config::CConfigFile(path));
+    return loadMappingOptions(config);
   } catch (const ConfigError& error) {
     throw ConfigError(path + ": " + error.what());
   }

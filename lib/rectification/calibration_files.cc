@@ -1,6 +1,5 @@
 #include "rectification/calibration_files.h"
 
-#include <mrpt/config/CConfigFile.h>
 #include <mrpt/img/TStereoCamera.h>
 #include <mrpt/poses/CPose3DQuat.h>
 
@@ -11,6 +10,7 @@
 #include <set>
 
 #include "common/atomic_file.h"
+#include "common/ini_section.h"
 
 namespace stereonav {
 namespace {
@@ -196,7 +196,7 @@ RigCalibration loadEurocSensors(const CalibrationNodes& nodes) {
 }
 
 RigCalibration loadMrptStereoCamera(const std::string& path) {
-  const mrpt::config::CConfigFile config(path);
+  const mrpt::config::CConfigFileMemory config = readConfigFile(path);
   std::vector<std::string> sections;
   config.getAllSections(sections);
   std::string prefix;

@@ -1,12 +1,10 @@
 #include "simulator/world_loader.h"
 
-#include <mrpt/config/CConfigFile.h>
 #include <mrpt/core/bits_math.h>
 
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <random>
 #include <utility>
@@ -451,9 +449,7 @@ World loadWorld(const mrpt::config::CConfigFileBase& config, const std::string& 
 }
 
 World loadWorld(const std::string& path) {
-  if (!std::ifstream(path)) throw ConfigError(path + ": cannot open the world file");
-  const mrpt::config::CConfigFile config(path);
-  return loadWorld(config, path);
+  return loadWorld(readConfigFile(path), path);
 }
 
 }  // namespace stereonav

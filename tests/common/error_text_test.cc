@@ -37,6 +37,13 @@ TEST(OneLineMessageTest, SingleMrptReportGivesItsMessage) {
             "Wrong file");
 }
 
+TEST(OneLineMessageTest, MrptIniParserReportWithoutAMessageLineGivesItsReason) {
+  // What MRPT 2.5's ini parser throws for "$eval{" left open (found by fuzz_ini_options).
+  EXPECT_EQ(oneLineMessage("==== MRPT exception ====\nLine 139: Expected closing `}` near: `$eval{x = 8`\n"
+                           "Call stack backtrace:\n[0 ]     0x7f5e10dedb28\n"),
+            "Line 139: Expected closing `}` near: `$eval{x = 8`");
+}
+
 TEST(OneLineMessageTest, OtherMultiLineTextGivesItsFirstLine) {
   EXPECT_EQ(oneLineMessage("\nfirst\nsecond\n"), "first");
 }

@@ -7,6 +7,30 @@
 namespace stereonav {
 namespace {
 
+TEST(ConfigFileTest, TextMrptCannotParseIsOneLineNamingTheFile) {
+  try {
+    parseConfigText("[grid]\nresolution = $eval{0.1 * \n", "bad.ini");
+    FAIL() << "parsed";
+  } catch (const ConfigError& error) {
+    const std::string message = error.what();
+    EXPECT_EQ(message.rfind("bad.ini: ", 0), 0u) << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    EXPECT_EQ(message.find("===="), std::string::npos) << message;
+  }
+  EXPECT_DOUBLE_EQ(parseConfigText("[grid]\nresolution = $eval{0.1 * 2}\n", "good.ini")
+                       .read_double("grid", "resolution", 0.0),
+                   0.2);
+}
+
+TEST(ConfigFileTest, AMissingFileIsNamed) {
+  try {
+    readConfigFile("/nonexistent/stereonav.ini");
+    FAIL() << "read";
+  } catch (const ConfigError& error) {
+    EXPECT_NE(std::string(error.what()).find("/nonexistent/stereonav.ini"), std::string::npos);
+  }
+}
+
 TEST(IniSectionTest, ReadsValuesAndDefaults) {
   mrpt::config::CConfigFileMemory config("[stereo]\nwindow = 9\nsubpixel = true\nthreshold = 0.25\n");
   IniSection section(config, "stereo");
