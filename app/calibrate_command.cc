@@ -5,6 +5,7 @@
 
 #include "command_line.h"
 #include "commands.h"
+#include "common/image_file.h"
 #include "rectification/calibration_files.h"
 #include "rectification/chessboard_calibration.h"
 #include "rectification/stereo_rectifier.h"
@@ -26,8 +27,7 @@ std::vector<cv::Mat> readImages(const std::string& pattern, const std::string& o
   if (paths.empty()) throw UsageError(option + " '" + pattern + "': no file matches");
   std::vector<cv::Mat> images;
   for (const std::string& path : paths) {
-    images.push_back(cv::imread(path, cv::IMREAD_GRAYSCALE));
-    if (images.back().empty()) throw std::runtime_error(path + ": cannot read image");
+    images.push_back(readImageFile(path, cv::IMREAD_GRAYSCALE));
   }
   return images;
 }

@@ -2,12 +2,12 @@
 
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <iostream>
 #include <optional>
 
 #include "command_line.h"
 #include "commands.h"
+#include "common/image_file.h"
 #include "common/ini_section.h"
 #include "disparity/disparity_engine.h"
 #include "disparity/disparity_evaluation.h"
@@ -38,11 +38,7 @@ bool endsWith(const std::string& text, const std::string& suffix) {
 }
 
 cv::Mat1b readGreyImage(const std::string& path) {
-  // Checked first so that OpenCV does not print its own warning before our one-line error.
-  if (!std::ifstream(path)) throw std::runtime_error(path + ": cannot open image");
-  const cv::Mat image = cv::imread(path, cv::IMREAD_GRAYSCALE);
-  if (image.empty()) throw std::runtime_error(path + ": cannot read image");
-  return image;
+  return readImageFile(path, cv::IMREAD_GRAYSCALE);
 }
 
 // "IMG:BX:BY"; the path itself may contain colons, so the baseline is the last two fields.

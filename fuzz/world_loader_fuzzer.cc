@@ -1,7 +1,5 @@
 // libFuzzer target: world files and motion plans on arbitrary text; a world that loads must give
 // a ground-truth map within its max_cells, or a ConfigError.
-#include <mrpt/config/CConfigFileMemory.h>
-
 #include <cstdint>
 #include <string>
 
@@ -13,7 +11,7 @@
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);
   try {
-    const stereonav::World world = stereonav::loadWorld(mrpt::config::CConfigFileMemory(text), "fuzz.ini");
+    const stereonav::World world = stereonav::loadWorld(stereonav::parseConfigText(text, "fuzz.ini"), "fuzz.ini");
     stereonav::GroundTruthMapOptions options;
     options.resolution_m = 0.25;  // keeps each run fast; the bound is max_cells either way
     stereonav::GroundTruthMap map(world, options);

@@ -1,20 +1,18 @@
 #include "disparity/disparity_evaluation.h"
 
-#include <opencv2/imgcodecs.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
+#include "common/image_file.h"
 #include "disparity/disparity_image.h"
 
 namespace stereonav {
 
 cv::Mat1f loadMiddleburyGroundTruth(const std::string& path, double scale) {
   if (!(scale > 0)) throw std::invalid_argument(path + ": ground-truth scale must be positive");
-  cv::Mat raw = cv::imread(path, cv::IMREAD_ANYDEPTH | cv::IMREAD_GRAYSCALE);
-  if (raw.empty()) throw std::runtime_error(path + ": cannot read ground-truth image");
+  const cv::Mat raw = readImageFile(path, cv::IMREAD_ANYDEPTH | cv::IMREAD_GRAYSCALE);
   if (raw.depth() != CV_8U && raw.depth() != CV_16U) {
     throw std::runtime_error(path + ": ground truth must be an 8- or 16-bit grey image");
   }
@@ -25,8 +23,7 @@ cv::Mat1f loadMiddleburyGroundTruth(const std::string& path, double scale) {
 }
 
 cv::Mat1b loadEvaluationMask(const std::string& path) {
-  const cv::Mat raw = cv::imread(path, cv::IMREAD_GRAYSCALE);
-  if (raw.empty()) throw std::runtime_error(path + ": cannot read evaluation mask");
+  const cv::Mat raw = readImageFile(path, cv::IMREAD_GRAYSCALE);
   return raw == 255;
 }
 

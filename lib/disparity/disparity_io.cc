@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "common/atomic_file.h"
+#include "common/image_file.h"
 #include "disparity/disparity_image.h"
 
 namespace stereonav {
@@ -95,8 +96,7 @@ void writeDisparityPng16(const std::string& path, const cv::Mat1f& disparity) {
 }
 
 cv::Mat1f readDisparityPng16(const std::string& path) {
-  const cv::Mat encoded = cv::imread(path, cv::IMREAD_UNCHANGED);
-  if (encoded.empty()) throw std::runtime_error(path + ": cannot read image");
+  const cv::Mat encoded = readImageFile(path, cv::IMREAD_UNCHANGED);
   if (encoded.type() != CV_16UC1) throw std::runtime_error(path + ": not a 16-bit single-channel PNG");
   cv::Mat1f disparity;
   encoded.convertTo(disparity, CV_32F, 1.0 / 256.0);

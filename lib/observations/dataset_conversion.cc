@@ -9,6 +9,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <sstream>
 
+#include "common/image_file.h"
 #include "rectification/calibration_files.h"
 
 namespace stereonav {
@@ -16,12 +17,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-cv::Mat readGrey(const std::string& path) {
-  if (!fs::is_regular_file(path)) throw std::runtime_error(path + ": no such image");
-  cv::Mat image = cv::imread(path, cv::IMREAD_GRAYSCALE);
-  if (image.empty()) throw std::runtime_error(path + ": cannot read image");
-  return image;
-}
 
 }  // namespace
 
@@ -65,8 +60,8 @@ size_t convertEuroc(const std::string& dataset, RawlogWriter& writer,
     pair.rightCamera = right_camera;
     pair.cameraPose = mount;
     pair.rightCameraPose = right_pose;
-    pair.imageLeft = mrpt::img::CImage(readGrey(left), mrpt::img::DEEP_COPY);
-    pair.imageRight = mrpt::img::CImage(readGrey(right), mrpt::img::DEEP_COPY);
+    pair.imageLeft = mrpt::img::CImage(readImageFile(left, cv::IMREAD_GRAYSCALE), mrpt::img::DEEP_COPY);
+    pair.imageRight = mrpt::img::CImage(readImageFile(right, cv::IMREAD_GRAYSCALE), mrpt::img::DEEP_COPY);
     pair.hasImageRight = true;
     writer.write(std::move(observations), std::nullopt);
     ++frames;

@@ -13,6 +13,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "common/image_file.h"
+
 namespace stereonav {
 namespace {
 
@@ -57,8 +59,7 @@ KittiSequence loadKittiSequence(const std::string& directory, double camera_heig
   const bool kitti_names = !std::filesystem::is_directory(directory + "/image_l");
   sequence.left_directory = directory + (kitti_names ? "/image_0" : "/image_l");
   sequence.right_directory = directory + (kitti_names ? "/image_1" : "/image_r");
-  const cv::Mat first = cv::imread(imagePath(sequence.left_directory, 0), cv::IMREAD_GRAYSCALE);
-  if (first.empty()) throw std::runtime_error(imagePath(sequence.left_directory, 0) + ": cannot read");
+  const cv::Mat first = readImageFile(imagePath(sequence.left_directory, 0), cv::IMREAD_GRAYSCALE);
   while (std::filesystem::exists(imagePath(sequence.left_directory, sequence.frames))) ++sequence.frames;
   CameraRig& rig = sequence.rig;
   rig.reference = {first.cols, first.rows, left[0], left[2], left[6]};
@@ -85,12 +86,8 @@ RigFrame kittiFrame(const KittiSequence& sequence, size_t index,
   frame.rig = sequence.rig;
   const std::string left_path = imagePath(sequence.left_directory, index);
   const std::string right_path = imagePath(sequence.right_directory, index);
-  frame.reference = cv::imread(left_path, cv::IMREAD_GRAYSCALE);
-  const cv::Mat right = cv::imread(right_path, cv::IMREAD_GRAYSCALE);
-  if (frame.reference.empty() || right.empty()) {
-    throw std::runtime_error((frame.reference.empty() ? left_path : right_path) + ": cannot read");
-  }
-  frame.secondaries = {right};
+  frame.reference = readImageFile(left_path, cv::IMREAD_GRAYSCALE);
+  frame.secondaries = {readImageFile(right_path, cv::IMREAD_GRAYSCALE)};
   frame.odometry = odometry;
   return frame;
 }

@@ -1,13 +1,13 @@
 #include "occupancy_grid/ros_map.h"
 
-#include <opencv2/imgcodecs.hpp>
-
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
 #include <stdexcept>
 
+#include "common/image_file.h"
 #include "common/ini_section.h"
 
 namespace stereonav {
@@ -15,6 +15,13 @@ namespace {
 
 // The map_server YAML is flat "key: value" lines; a full YAML parser is not needed for it.
 std::map<std::string, std::string> readYamlKeys(const std::string& path) {
+  // A map YAML is a few lines: a device or a huge file named by mistake is refused, not read.
+  constexpr std::uintmax_t kMaxYamlBytes = 1 << 20;
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(path, error)) throw std::runtime_error(path + ": no such map YAML file");
+  if (std::filesystem::file_size(path, error) > kMaxYamlBytes) {
+    throw std::runtime_error(path + ": larger than 1 MB, not a map_server YAML");
+  }
   std::ifstream in(path);
   if (!in) throw std::runtime_error(path + ": cannot open the map YAML");
   std::map<std::string, std::string> keys;
@@ -104,16 +111,13 @@ RosMap loadRosMap(const std::string& yaml_path) {
   std::string image_path = required(keys, yaml_path, "image");
   const size_t slash = yaml_path.find_last_of('/');
   if (image_path.front() != '/' && slash != std::string::npos) image_path = yaml_path.substr(0, slash + 1) + image_path;
-  // Checked first so that OpenCV does not print its own warning before our one-line error.
-  if (!std::ifstream(image_path)) throw std::runtime_error(image_path + ": cannot open the map image (named in " + yaml_path + ")");
   // map_server averages the colour channels; so does a greyscale read (within rounding).
   cv::Mat1b image;
   try {
-    image = cv::imread(image_path, cv::IMREAD_GRAYSCALE);
-  } catch (const cv::Exception& error) {
-    throw std::runtime_error(image_path + ": cannot read the map image (" + error.err + ")");
+    image = readImageFile(image_path, cv::IMREAD_GRAYSCALE);
+  } catch (const std::runtime_error& error) {
+    throw std::runtime_error(std::string(error.what()) + " (the map image of " + yaml_path + ")");
   }
-  if (image.empty()) throw std::runtime_error(image_path + ": cannot read the map image (named in " + yaml_path + ")");
 
   cv::Mat1b classes(image.size());
   for (int row = 0; row < image.rows; ++row) {

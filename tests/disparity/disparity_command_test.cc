@@ -234,7 +234,7 @@ TEST_F(DisparityCommandTest, UnknownIniKeyIsNamedWithTheNearestKnownKey) {
 TEST_F(DisparityCommandTest, MissingConfigAndOutputTypeAreNamed) {
   expectError(run("--config " + path("none.ini") + " --ref " + kData + "scene1.row3.col3.ppm --cam " + kData +
                   "scene1.row3.col4.ppm:1:0 --out " + path("out.pfm")),
-              1, "none.ini: cannot read config file");
+              1, "none.ini: cannot open the file");
   expectError(runBinocular("--out " + path("out.tiff")), 2, "--out");
 }
 

@@ -1,0 +1,22 @@
+#include "common/image_file.h"
+
+#include <opencv2/imgcodecs.hpp>
+
+#include <filesystem>
+#include <stdexcept>
+
+namespace stereonav {
+
+cv::Mat readImageFile(const std::string& path, int flags) {
+  if (!std::filesystem::is_regular_file(path)) throw std::runtime_error(path + ": no such image file");
+  cv::Mat image;
+  try {
+    image = cv::imread(path, flags);
+  } catch (const cv::Exception& error) {
+    throw std::runtime_error(path + ": cannot read the image (" + error.err + ")");
+  }
+  if (image.empty()) throw std::runtime_error(path + ": cannot read the image (not a format OpenCV decodes)");
+  return image;
+}
+
+}  // namespace stereonav
