@@ -184,7 +184,7 @@ TEST_F(DisparityCommandTest, MasksNeedGroundTruthAndTheirSize) {
 TEST_F(DisparityCommandTest, MissingImageIsNamed) {
   expectError(run("--config " + path("stereo.ini") + " --ref " + path("nope.png") + " --cam " + kData +
                   "scene1.row3.col4.ppm:1:0 --out " + path("out.pfm")),
-              1, "nope.png: cannot open image");
+              1, "nope.png: no such image file");
 }
 
 TEST_F(DisparityCommandTest, ImagesOfDifferentSizesAreRejected) {

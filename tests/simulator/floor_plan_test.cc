@@ -30,7 +30,9 @@ bool drawnOccupied(int col, int image_row) {
 class FloorPlanTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    directory_ = std::string(STEREONAV_BINARY_DIR) + "/test_outputs/floor_plan";
+    // One folder per test: ctest runs the tests of this fixture in parallel processes.
+    directory_ = std::string(STEREONAV_BINARY_DIR) + "/test_outputs/floor_plan/" +
+                 ::testing::UnitTest::GetInstance()->current_test_info()->name();
     std::filesystem::remove_all(directory_);
     std::filesystem::create_directories(directory_ + "/plans");
     cv::Mat1b image(kHeight, kWidth, uchar{254});
