@@ -131,7 +131,9 @@ int runMapCommand(const std::vector<std::string>& arguments) {
     // A failure: one line saying why (the outputs, written anyway, hold an empty map).
     std::string why = report.damage ? report.damage->describe(job.rawlog_path) : report.skipped.summary();
     if (why.empty()) why = "no stereo frame in it";
-    std::cerr << "stereonav map: no frame of " << job.rawlog_path << " could be mapped: " << why << "\n";
+    // Both files are named: the rawlog's frames may be fine for another configuration's [rig].
+    std::cerr << "stereonav map: no frame of " << job.rawlog_path << " could be mapped with "
+              << request.config_path << ": " << why << "\n";
     return 1;
   }
   std::cerr << "stereonav map: " << report.summary() << "\n"
