@@ -8,6 +8,7 @@
 #include "progress_meter.h"
 #include "sigint_stop.h"
 #include "closed_loop/exploration_run.h"
+#include "simulator/simulation_recorder.h"
 #include "simulator/world_loader.h"
 
 namespace stereonav::app {
@@ -51,6 +52,7 @@ int runExploreCommand(const std::vector<std::string>& arguments) {
   if (job.max_time_s && !(*job.max_time_s > 0.0)) throw UsageError("--max-time: must be positive");
 
   const ExplorationConfig config = loadExplorationConfig(config_path);
+  if (!job.record_rawlog.empty()) SimulationRecorder::checkRecordable(config.simulator.rig, config_path);
   const World world = loadWorld(world_path);
   std::optional<ProgressMeter> progress;
   SigintStopRequest sigint;

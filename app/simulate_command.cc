@@ -52,6 +52,7 @@ int runSimulateCommand(const std::vector<std::string>& arguments) {
       throw ConfigError(config_path + ": " + error.what() + " (world " + world_path + ")");
     }
   }
+  SimulationRecorder::checkRecordable(config.rig, config_path);
   SimulationRecorder recorder(rawlog_path, config.rawlog, config.rig);
   Simulation simulation(world, config.rig, config.sensor, config.robot, config.simulation);
   const SimulationSummary summary = simulation.run(plan, [&](const SimulatedFrame& frame) { recorder.record(frame); });

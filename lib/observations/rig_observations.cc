@@ -84,10 +84,14 @@ std::string cameraLabel(const std::string& pair_label, size_t camera_index) {
   return pair_label + "_CAM" + std::to_string(camera_index);
 }
 
+bool formsStereoPair(const CameraRig& rig) {
+  return !rig.secondaries.empty() && rig.secondaries[0].by == 0.0 && rig.secondaries[0].bx != 0.0;
+}
+
 RigObservations toRigObservations(const RigFrame& frame, const std::string& pair_label) {
   checkRigFrame(frame);
   const CameraRig& rig = frame.rig;
-  if (rig.secondaries.empty() || rig.secondaries[0].by != 0.0 || rig.secondaries[0].bx == 0.0) {
+  if (!formsStereoPair(rig)) {
     throw std::invalid_argument(
         "rig frame: the first secondary camera must sit beside the reference (by = 0, bx != 0) to "
         "form an MRPT stereo pair");

@@ -39,6 +39,10 @@ struct RigObservations {
 // "<pair_label>_CAM<camera_index>".
 std::string cameraLabel(const std::string& pair_label, size_t camera_index);
 
+// Whether an MRPT stereo observation can describe `rig`: its first secondary camera sits beside
+// the reference (by = 0, bx != 0) and forms the CObservationStereoImages pair.
+bool formsStereoPair(const CameraRig& rig);
+
 // The observations of `frame`, images embedded (sharing the frame's pixels). Throws
 // std::invalid_argument if the frame does not match its rig or its first secondary camera is not
 // beside the reference (by != 0), which no MRPT stereo observation can describe.

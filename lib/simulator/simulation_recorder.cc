@@ -3,6 +3,8 @@
 #include <iomanip>
 
 #include "common/atomic_file.h"
+#include "common/ini_section.h"
+#include "observations/rig_observations.h"
 
 namespace stereonav {
 
@@ -21,6 +23,13 @@ void SimulationRecorder::record(const SimulatedFrame& frame) {
 void SimulationRecorder::finish() {
   writeStringAtomically(ground_truth_path_, ground_truth_.str());
   writer_.finish();
+}
+
+void SimulationRecorder::checkRecordable(const CameraRig& rig, const std::string& config_path) {
+  if (formsStereoPair(rig)) return;
+  throw ConfigError(config_path +
+                    ": [rig] secondary_cameras: the first camera must sit beside the reference "
+                    "(by = 0, bx != 0) for the frames to be recorded as MRPT stereo pairs");
 }
 
 std::string SimulationRecorder::groundTruthPath(const std::string& rawlog_path) {

@@ -28,6 +28,10 @@ class SimulationRecorder {
   // "OUT.rawlog" -> "OUT.gt.txt".
   static std::string groundTruthPath(const std::string& rawlog_path);
 
+  // Throws ConfigError "<config_path>: [rig] secondary_cameras: ..." when frames of `rig` cannot
+  // be recorded (formsStereoPair): checked before a run, so that it fails before the work.
+  static void checkRecordable(const CameraRig& rig, const std::string& config_path);
+
  private:
   RawlogWriter writer_;
   CameraRig rig_;

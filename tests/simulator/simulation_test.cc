@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "common/ini_section.h"
 #include "observations/rawlog_reader.h"
 #include "simulator/simulation_recorder.h"
 #include "world_text.h"
@@ -77,6 +78,20 @@ TEST(Simulation, RunStopsAtTheTimeLimitWhenStuck) {
   EXPECT_FALSE(summary.plan_completed);
   EXPECT_EQ(summary.collisions, 1);
   EXPECT_NEAR(summary.duration_s, 4.0, 1e-9);
+}
+
+TEST(SimulationRecorder, ARigWhoseFirstCameraIsNotBesideTheReferenceIsRejectedNamingTheFile) {
+  CameraRig rig = tinyRig();
+  EXPECT_NO_THROW(SimulationRecorder::checkRecordable(rig, "sim.ini"));
+  rig.secondaries = {{-1.0, -1.0}, {0.0, -1.0}};  // found by the black-box campaign
+  try {
+    SimulationRecorder::checkRecordable(rig, "sim.ini");
+    FAIL() << "accepted";
+  } catch (const ConfigError& error) {
+    EXPECT_EQ(std::string(error.what()).rfind("sim.ini: [rig] secondary_cameras: ", 0), 0u) << error.what();
+  }
+  rig.secondaries = {{0.0, -1.0}, {1.0, 0.0}};  // beside the reference, but not first
+  EXPECT_THROW(SimulationRecorder::checkRecordable(rig, "sim.ini"), ConfigError);
 }
 
 TEST(SimulationRecorder, RawlogHoldsEveryFrameWithOdometryAndTheTruthIsBesideIt) {
