@@ -5,10 +5,10 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <csignal>
 #include <filesystem>
 #include <fstream>
-#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -35,6 +35,20 @@ std::string readAll(const std::string& path) {
   return text.str();
 }
 
+// Where the first line "<key> = ..." (any spaces before '=') of an ini text starts; npos if none.
+size_t keyLine(const std::string& text, const std::string& key) {
+  for (size_t start = 0; start < text.size();) {
+    if (text.compare(start, key.size(), key) == 0) {
+      const size_t equals = text.find_first_not_of(' ', start + key.size());
+      if (equals != std::string::npos && text[equals] == '=') return start;
+    }
+    const size_t newline = text.find('\n', start);
+    if (newline == std::string::npos) break;
+    start = newline + 1;
+  }
+  return std::string::npos;
+}
+
 class ReproTest : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -53,9 +67,11 @@ class ReproTest : public ::testing::Test {
                       const std::vector<std::pair<std::string, std::string>>& values) const {
     std::string text = readAll(kRepro + from);
     for (const auto& [key, value] : values) {
-      const std::regex line("(^|\\n)" + key + " *=[^\\n]*");
-      EXPECT_TRUE(std::regex_search(text, line)) << key << " not in " << from;
-      text = std::regex_replace(text, line, "$1" + key + " = " + value, std::regex_constants::format_first_only);
+      const size_t start = keyLine(text, key);
+      EXPECT_NE(start, std::string::npos) << key << " not in " << from;
+      if (start == std::string::npos) continue;
+      const size_t end = std::min(text.find('\n', start), text.size());
+      text.replace(start, end - start, key + " = " + value);
     }
     std::ofstream(path(name)) << text;
     return path(name);
