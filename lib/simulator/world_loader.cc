@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <random>
 #include <utility>
 
@@ -113,7 +114,7 @@ class WorldBuilder {
     return "[" + section.name() + "] " + key;
   }
 
-  static void fail(const IniSection& section, const std::string& key, const std::string& why) {
+  [[noreturn]] static void fail(const IniSection& section, const std::string& key, const std::string& why) {
     throw ConfigError(where(section, key) + ": " + why);
   }
 
@@ -284,17 +285,17 @@ class WorldBuilder {
 
   RosMap loadFloorPlanMap(const IniSection& section, const std::string& map_file) const {
     const std::filesystem::path path = std::filesystem::path(directory_) / map_file;
+    std::optional<RosMap> plan;
     try {
-      RosMap plan = loadRosMap(path.string());
-      checkExtent(section, "map", plan.xMin());
-      checkExtent(section, "map", plan.yMin());
-      checkExtent(section, "map", plan.xMin() + plan.resolution() * plan.width());
-      checkExtent(section, "map", plan.yMin() + plan.resolution() * plan.height());
-      return plan;
+      plan.emplace(loadRosMap(path.string()));
     } catch (const std::runtime_error& error) {
       fail(section, "map", error.what());
     }
-    return RosMap(1.0, 0.0, 0.0, cv::Mat1b());  // not reached: fail() throws
+    checkExtent(section, "map", plan->xMin());
+    checkExtent(section, "map", plan->yMin());
+    checkExtent(section, "map", plan->xMin() + plan->resolution() * plan->width());
+    checkExtent(section, "map", plan->yMin() + plan->resolution() * plan->height());
+    return *plan;
   }
 
   void addCylinder(IniSection& section) {

@@ -135,6 +135,10 @@ TEST_F(FloorPlanTest, ErrorsNameTheSectionKeyAndFile) {
   EXPECT_NE(missing.find("none.yaml"), std::string::npos) << missing;
   const std::string no_flat = error("[floor_plan.house]\nmap = plans/flat.yaml\nflat_share = 0.3\n");
   EXPECT_NE(no_flat.find("[floor_plan.house] flat_texture"), std::string::npos) << no_flat;
+  // The plan reaches x = 4 m: beyond a 2 m world limit, said once for the section and key.
+  const std::string far = error("[world]\nmax_extent_m = 2\n[floor_plan.house]\nmap = plans/flat.yaml\n");
+  EXPECT_NE(far.find("[floor_plan.house] map: 4 is beyond [world] max_extent_m"), std::string::npos) << far;
+  EXPECT_EQ(far.find("[floor_plan.house]"), far.rfind("[floor_plan.house]")) << far;
   const std::string share = error("[floor_plan.house]\nmap = plans/flat.yaml\nflat_share = 1.5\n");
   EXPECT_NE(share.find("flat_share"), std::string::npos) << share;
 }
