@@ -9,6 +9,9 @@
 #include "commands.h"
 #include "common/atomic_file.h"
 #include "observations/dataset_conversion.h"
+#ifdef STEREONAV_WITH_ROS
+#include "rosbag_convert.h"
+#endif
 #include "simulator/simulation_recorder.h"
 
 namespace stereonav::app {
@@ -27,6 +30,12 @@ constexpr const char* kUsage =
     "         report it: every distance scaled by 1 + B (default 0) and the heading drifting by a\n"
     "         Gaussian of D degrees per metre (default 0; seeded by S, default 1); the true poses\n"
     "         are written as OUT.gt.txt ('t x y phi', for 'stereonav map --use-ground-truth-poses').\n"
+    "       rosbag|to-rosbag --dataset IN --out OUT [--config INI] [--images external]\n"
+    "  rosbag     a ROS 1 bag of a stereo head (stereo_image_proc's <ns>/left|right|top/image_rect\n"
+    "             or image_raw + camera_info, nav_msgs/Odometry) into a rawlog; the head (cameras,\n"
+    "             reference, mount, pairing tolerance) from the ini's [rig] and [rawlog]\n"
+    "  to-rosbag  a rawlog (read as 'stereonav map' reads it with INI) into a bag of\n"
+    "             /stereo/<camera>/image_rect + camera_info and /odom, for stereonav_node\n"
     "--images external writes the images as PNG files in OUT_Images/ (MRPT's external storage).\n";
 
 struct KittiRequest {
@@ -61,14 +70,22 @@ int runConvertCommand(const std::vector<std::string>& arguments) {
     std::cout << kUsage;
     return 0;
   }
-  if (arguments.empty() || (arguments[0] != "euroc" && arguments[0] != "kitti")) {
-    throw UsageError("the first argument is the dataset format: euroc or kitti");
+  const bool rosbag = !arguments.empty() && (arguments[0] == "rosbag" || arguments[0] == "to-rosbag");
+  if (arguments.empty() || (arguments[0] != "euroc" && arguments[0] != "kitti" && !rosbag)) {
+    throw UsageError("the first argument is the format: euroc, kitti, rosbag or to-rosbag");
   }
   const bool kitti = arguments[0] == "kitti";
   CommandLine command_line({arguments.begin() + 1, arguments.end()}, {"help"});
   if (command_line.flag("help")) {
     std::cout << kUsage;
     return 0;
+  }
+  if (rosbag) {
+#ifdef STEREONAV_WITH_ROS
+    return runRosbagConversion(arguments[0], command_line);
+#else
+    throw UsageError(arguments[0] + ": this stereonav was built without ROS 1 (scripts/setup installs it)");
+#endif
   }
   const std::string dataset = command_line.required("dataset");
   const std::string out = command_line.required("out");

@@ -37,7 +37,7 @@ const Command kCommands[] = {
      stereonav::app::runConfigCommand},
     {"calibrate", "calibrate a stereo pair from chessboard image pairs (OpenCV YAML out)",
      stereonav::app::runCalibrateCommand},
-    {"convert", "convert a EuRoC or KITTI stereo dataset into a rawlog",
+    {"convert", "convert a EuRoC or KITTI dataset or a ROS bag into a rawlog, or a rawlog into a bag",
      stereonav::app::runConvertCommand},
 };
 

@@ -106,9 +106,12 @@ void CameraImagePairer::decide(bool at_end) {
         const double difference = std::abs(seconds(queue[i]->timestamp) - t);
         if (difference <= best) best = difference, chosen[label] = i, found = true;
       }
-      // Until an image past the window arrives, a closer one may still come.
+      // Until an image past the window arrives, a closer one may still come; nothing beats an
+      // image of the same instant (a head whose cameras share one clock), so a live stream's
+      // capture is decided as soon as its last camera arrives.
       const bool passed = !queue.empty() && seconds(queue.back()->timestamp) > t + tolerance;
-      if (!passed && !at_end) waiting = true;
+      const bool exact = found && best == 0.0;
+      if (!passed && !exact && !at_end) waiting = true;
       if (found) {
         capture.images.push_back(queue[chosen[label]]);
         continue;

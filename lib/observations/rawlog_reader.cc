@@ -36,6 +36,11 @@ std::string RawlogDamage::describe(const std::string& path) const {
          " (byte " + std::to_string(byte_offset) + " of the uncompressed stream): " + error;
 }
 
+void SkippedFrames::add(const ObservationRejected& rejection) {
+  const auto reason = static_cast<size_t>(rejection.reason());
+  if (count[reason]++ == 0) first_message[reason] = rejection.what();
+}
+
 size_t SkippedFrames::total() const {
   size_t sum = 0;
   for (const size_t n : count) sum += n;
@@ -115,7 +120,7 @@ std::optional<RigFrame> RawlogReader::nextPairedFrame() {
       const std::string label = capture->images.front()->sensorLabel;
       return finishFrame(fromCameraImages(capture->images, images_directory_, rectifier_), label);
     } catch (const ObservationRejected& rejection) {
-      skip(rejection);
+      skipped_.add(rejection);
     }
   }
   return std::nullopt;
@@ -211,7 +216,7 @@ std::optional<RigFrame> RawlogReader::completeFrame(
     frame.odometry = odometry;
     return finishFrame(std::move(frame), pair.sensorLabel);
   } catch (const ObservationRejected& rejection) {
-    skip(rejection);
+    skipped_.add(rejection);
     return std::nullopt;
   }
 }
@@ -245,11 +250,6 @@ RigFrame RawlogReader::finishFrame(RigFrame frame, const std::string& label) {
     }
   }
   return frame;
-}
-
-void RawlogReader::skip(const ObservationRejected& rejection) {
-  const auto reason = static_cast<size_t>(rejection.reason());
-  if (skipped_.count[reason]++ == 0) skipped_.first_message[reason] = rejection.what();
 }
 
 }  // namespace stereonav

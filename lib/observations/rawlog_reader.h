@@ -52,6 +52,7 @@ struct SkippedFrames {
   std::array<size_t, kRejectReasonCount> count{};             // indexed by RejectReason
   std::array<std::string, kRejectReasonCount> first_message;  // the first of each, for the user
 
+  void add(const ObservationRejected& rejection);
   size_t total() const;
   // E.g. "skipped 2 of the rawlog's stereo frames: 2 wrong image format (TRICLOPS left: image is
   // 32x48, its camera is 64x48)"; "" if none was skipped.
@@ -98,7 +99,6 @@ class RawlogReader {
   std::optional<RigFrame> nextPairedFrame();
   // Checks a frame against the expected rig and gives it the odometry since the last frame.
   RigFrame finishFrame(RigFrame frame, const std::string& label);
-  void skip(const ObservationRejected& rejection);
 
   std::string path_;
   std::string images_directory_;

@@ -93,6 +93,20 @@ TEST(CameraImagePairingTest, ThreeCamerasOutOfOrderAndOtherLabelsIgnored) {
             (std::vector<std::string>{"skip", "0.000/0.000/0.000", "0.100/0.100/0.100"}));
 }
 
+TEST(CameraImagePairingTest, ACaptureOfOneInstantIsDecidedWhenItsLastCameraArrives) {
+  CameraImagePairer pairer({{"LEFT", "RIGHT", "TOP"}, 0.005});
+  pairer.add(image("RIGHT", 0.0));
+  pairer.add(image("LEFT", 0.0));
+  EXPECT_FALSE(pairer.next());  // TOP may still come
+  pairer.add(image("TOP", 0.002));
+  EXPECT_FALSE(pairer.next());  // a TOP image closer to 0.0 may still come
+  pairer.add(image("TOP", 0.0));
+  const auto capture = pairer.next();
+  ASSERT_TRUE(capture);
+  ASSERT_EQ(capture->images.size(), 3u);
+  EXPECT_DOUBLE_EQ(time(capture->images[2]), 0.0);
+}
+
 TEST(CameraImagePairingTest, IniKeys) {
   mrpt::config::CConfigFileMemory config;
   config.write("rawlog", "camera_labels", "LEFT RIGHT TOP");
