@@ -128,6 +128,9 @@ mrpt::obs::CObservationImage::Ptr toCameraObservation(const sensor_msgs::Image& 
   camera.ncols = info.width;
   camera.nrows = info.height;
   camera.setIntrinsicParamsFromValues(info.K[0], info.K[4], info.K[2], info.K[5]);
+  // MRPT's plumb_bob holds OpenCV's k1 k2 p1 p2 k3 k4 k5 k6: ROS's plumb_bob and
+  // rational_polynomial alike.
+  camera.distortion = mrpt::img::DistortionModel::plumb_bob;
   for (size_t i = 0; i < std::min(info.D.size(), camera.dist.size()); ++i) camera.dist[i] = info.D[i];
   // A point p in this camera's frame is R p in the rectified frame, and R p + (X, Y, 0) in the
   // left camera's rectified frame: the camera's pose there is (R, (X, Y, 0)).

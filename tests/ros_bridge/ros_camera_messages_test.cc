@@ -3,12 +3,16 @@
 #include <boost/make_shared.hpp>
 #include <gtest/gtest.h>
 #include <mrpt/core/bits_math.h>
+#include <cv_bridge/cv_bridge.h>
+#include <opencv2/calib3d.hpp>
+#include <opencv2/imgproc.hpp>
 #include <sensor_msgs/image_encodings.h>
 
 #include "observations/frame_rectifier.h"
 #include "observations/rig_observations.h"
 #include "ros_bridge/ros_frame_assembler.h"
 #include "../observations/sample_frames.h"
+#include "../rectification/synthetic_heads.h"
 
 namespace stereonav {
 namespace {
@@ -87,6 +91,8 @@ TEST(RosCameraMessagesTest, CameraPoseComesFromRAndP) {
   const double a = mrpt::DEG2RAD(10.0);
   info.R = {std::cos(a), 0, std::sin(a), 0, 1, 0, -std::sin(a), 0, std::cos(a)};
   info.P = {60, 0, 32, -60 * 0.12, 0, 60, 24, 0, 0, 0, 1, 0};
+  info.distortion_model = "plumb_bob";
+  info.D = {-0.1, 0.02, 0.001, -0.002, 0.003};
   sensor_msgs::Image image;
   image.width = 64;
   image.height = 48;
@@ -102,6 +108,8 @@ TEST(RosCameraMessagesTest, CameraPoseComesFromRAndP) {
   EXPECT_NEAR(axis.x, std::sin(a), 1e-12);
   EXPECT_NEAR(axis.z, std::cos(a), 1e-12);
   EXPECT_DOUBLE_EQ(observation->cameraParams.fx(), 50.0);
+  EXPECT_EQ(observation->cameraParams.distortion, mrpt::img::DistortionModel::plumb_bob);
+  EXPECT_DOUBLE_EQ(observation->cameraParams.dist[3], -0.002);
 
   info.width = 32;
   EXPECT_THROW(toCameraObservation(image, info, "right"), ObservationRejected);
@@ -111,6 +119,57 @@ TEST(RosCameraMessagesTest, CameraPoseComesFromRAndP) {
   info.distortion_model = "plumb_bob";
   image.encoding = "32FC1";
   EXPECT_THROW(toCameraObservation(image, info, "right"), ObservationRejected);
+}
+
+// A raw head as a ROS driver publishes it (image_raw, with K, D and OpenCV's stereoRectify R and
+// P in its CameraInfo): a dot drawn where a scene point falls in each raw image comes out of the
+// assembler on one row, at the disparity of its depth.
+TEST(RosCameraMessagesTest, RawHeadIsRectifiedFromItsCameraInfo) {
+  const RigCalibration head = rawBinocularHead();
+  const CameraCalibration& left = head.cameras[0];
+  const CameraCalibration& right = head.cameras[1];
+  cv::Mat r1, r2, p1, p2, q;
+  cv::stereoRectify(left.camera_matrix, left.distortion, right.camera_matrix, right.distortion,
+                    left.size, right.rotation, right.translation, r1, r2, p1, p2, q,
+                    cv::CALIB_ZERO_DISPARITY, 0.0);
+  const cv::Vec3d point(-0.3, 0.4, 2.5);  // in the left camera's frame
+  RosHeadOptions options;
+  options.wait_for_odometry = false;
+  RosFrameAssembler assembler(options);
+  const std::vector<std::pair<const CameraCalibration*, std::pair<cv::Mat, cv::Mat>>> cameras{
+      {&left, {r1, p1}}, {&right, {r2, p2}}};
+  for (size_t k = 0; k < cameras.size(); ++k) {
+    const CameraCalibration& camera = *cameras[k].first;
+    cv::Mat image(camera.size, CV_8UC1, cv::Scalar(0));
+    const cv::Point2f centre = projectRaw(camera, point);
+    cv::circle(image, cv::Point(cvRound(centre.x * 16), cvRound(centre.y * 16)), 4 * 16,
+               cv::Scalar(255), cv::FILLED, cv::LINE_AA, 4);
+    std_msgs::Header header;
+    header.stamp = ros::Time(100, 0);
+    auto info = boost::make_shared<sensor_msgs::CameraInfo>();
+    info->header = header;
+    info->width = static_cast<uint32_t>(camera.size.width);
+    info->height = static_cast<uint32_t>(camera.size.height);
+    info->distortion_model = "plumb_bob";
+    info->D = camera.distortion;
+    for (int i = 0; i < 9; ++i) info->K[i] = camera.camera_matrix.val[i];
+    for (int i = 0; i < 9; ++i) info->R[i] = cameras[k].second.first.at<double>(i / 3, i % 3);
+    for (int i = 0; i < 12; ++i) info->P[i] = cameras[k].second.second.at<double>(i / 4, i % 4);
+    assembler.addImage(k, cv_bridge::CvImage(header, "mono8", image).toImageMsg());
+    assembler.addCameraInfo(k, info);
+  }
+  const auto frame = assembler.next();
+  ASSERT_TRUE(frame) << assembler.skipped().summary();
+  EXPECT_NEAR(frame->rig.baseline_m, cv::norm(right.translation), 1e-6);
+  std::vector<cv::Point2d> dots;
+  for (const cv::Mat* image : {&frame->reference, &frame->secondaries[0]}) {
+    const cv::Moments m = cv::moments(*image);
+    ASSERT_GT(m.m00, 0.0);
+    dots.push_back({m.m10 / m.m00, m.m01 / m.m00});
+  }
+  EXPECT_NEAR(dots[0].y, dots[1].y, 0.1);
+  // Depth from the rectified disparity: the point's distance along the rectified optical axis.
+  EXPECT_NEAR(frame->rig.depthForDisparity(dots[0].x - dots[1].x), 2.5, 0.05);
 }
 
 TEST(RosCameraMessagesTest, ARigTheConventionCannotCarryIsRefused) {
