@@ -76,6 +76,8 @@ StereoMappingNode::StereoMappingNode(ros::NodeHandle& node, const MappingOptions
   } else {
     tf_buffer_ = std::make_unique<tf2_ros::Buffer>();
     tf_listener_ = std::make_unique<tf2_ros::TransformListener>(*tf_buffer_);
+    // tf arrives on its own thread: captures waiting for it are looked at again on a timer too.
+    tf_timer_ = node.createTimer(ros::Duration(0.02), [this](const ros::TimerEvent&) { mapReadyFrames(); });
   }
   map_publisher_ = node.advertise<nav_msgs::OccupancyGrid>("map", 1, true);
   scan_publisher_ = node.advertise<sensor_msgs::LaserScan>("stereo_scan", 10);

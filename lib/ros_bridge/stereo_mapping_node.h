@@ -71,6 +71,7 @@ class StereoMappingNode {
   ros::Publisher map_publisher_, scan_publisher_, panel_publisher_, frames_publisher_;
   std::unique_ptr<tf2_ros::Buffer> tf_buffer_;
   std::unique_ptr<tf2_ros::TransformListener> tf_listener_;
+  ros::Timer tf_timer_;
   std::deque<RigFrame> waiting_for_tf_;
   std::unique_ptr<StereoMapper> mapper_;
   std::unique_ptr<DebugPanelRenderer> panels_;

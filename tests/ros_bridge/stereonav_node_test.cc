@@ -15,6 +15,7 @@
 #include <signal.h>
 #include <spawn.h>
 #include <std_msgs/UInt32.h>
+#include <tf2_ros/transform_broadcaster.h>
 #include <sys/socket.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -151,8 +152,11 @@ class StereonavNodeTest : public ::testing::Test {
     double seconds_after_last_message = 0.0;  // until the last frame was mapped and published
     int node_exit_status = -1;
   };
+  // How the bag's odometry reaches the node.
+  enum class Odometry { kTopic, kTf };
   Playback play(const std::string& bag_path, const std::string& config, double speed_up,
-                uint32_t frames, const std::string& node_output_prefix, bool one_core);
+                uint32_t frames, const std::string& node_output_prefix, bool one_core,
+                Odometry odometry = Odometry::kTopic);
 
   static std::filesystem::path directory_;
   static std::unique_ptr<ChildProcess> master_;
@@ -165,9 +169,12 @@ bool StereonavNodeTest::master_up_ = false;
 
 StereonavNodeTest::Playback StereonavNodeTest::play(const std::string& bag_path, const std::string& config,
                                                     double speed_up, uint32_t frames,
-                                                    const std::string& node_output_prefix, bool one_core) {
+                                                    const std::string& node_output_prefix, bool one_core,
+                                                    Odometry odometry) {
   std::vector<std::string> command{kBinaries + "/stereonav_node", "_config:=" + config,
                                    "_map_every_frames:=1", "_output_prefix:=" + node_output_prefix};
+  // Every parameter is given: the master keeps a private parameter after its node has ended.
+  command.push_back(std::string("_odometry_source:=") + (odometry == Odometry::kTf ? "tf" : "topic"));
   if (one_core) command.insert(command.begin(), {"taskset", "-c", "0"});
   ChildProcess node(command);
   EXPECT_TRUE(node.started());
@@ -197,11 +204,12 @@ StereonavNodeTest::Playback StereonavNodeTest::play(const std::string& bag_path,
       publishers[topic] = handle.advertise<sensor_msgs::Image>(topic, 100);
     } else if (connection->datatype == "sensor_msgs/CameraInfo") {
       publishers[topic] = handle.advertise<sensor_msgs::CameraInfo>(topic, 100);
-    } else {
+    } else if (odometry == Odometry::kTopic) {
       publishers[topic] = handle.advertise<nav_msgs::Odometry>(topic, 100);
     }
   }
-  EXPECT_EQ(publishers.size(), 7u);  // 3 cameras x (image, camera_info) + odometry
+  EXPECT_EQ(publishers.size(), odometry == Odometry::kTopic ? 7u : 6u);  // 3 x (image, info) + odom
+  tf2_ros::TransformBroadcaster tf_broadcaster;
   for (auto& [topic, publisher] : publishers) {
     EXPECT_TRUE(waitFor([&] { return publisher.getNumSubscribers() > 0; }, 30.0))
         << "stereonav_node did not subscribe to " << topic;
@@ -213,10 +221,21 @@ StereonavNodeTest::Playback StereonavNodeTest::play(const std::string& bag_path,
   const auto start = std::chrono::steady_clock::now();
   for (const rosbag::MessageInstance& message : view) {
     std::this_thread::sleep_until(start + std::chrono::duration<double>((message.getTime() - begin).toSec() / speed_up));
-    ros::Publisher& publisher = publishers[message.getTopic()];
+    ros::Publisher& publisher = publishers[message.getTopic()];  // empty for odometry over tf
     if (const auto image = message.instantiate<sensor_msgs::Image>()) publisher.publish(image);
     if (const auto info = message.instantiate<sensor_msgs::CameraInfo>()) publisher.publish(info);
-    if (const auto odometry = message.instantiate<nav_msgs::Odometry>()) publisher.publish(odometry);
+    const auto odometry_message = message.instantiate<nav_msgs::Odometry>();
+    if (odometry_message && odometry == Odometry::kTopic) publisher.publish(odometry_message);
+    if (odometry_message && odometry == Odometry::kTf) {
+      geometry_msgs::TransformStamped transform;
+      transform.header = odometry_message->header;
+      transform.child_frame_id = odometry_message->child_frame_id;
+      transform.transform.translation.x = odometry_message->pose.pose.position.x;
+      transform.transform.translation.y = odometry_message->pose.pose.position.y;
+      transform.transform.translation.z = odometry_message->pose.pose.position.z;
+      transform.transform.rotation = odometry_message->pose.pose.orientation;
+      tf_broadcaster.sendTransform(transform);
+    }
   }
   const auto played = std::chrono::steady_clock::now();
   const bool complete = waitFor([&] {
@@ -276,6 +295,19 @@ TEST_F(StereonavNodeTest, OfficeRunBagGivesTheOfflineMapCellForCell) {
   EXPECT_EQ(playback.node_exit_status, 0);
   // Ctrl-C wrote the node's map files: the same as `stereonav map`'s.
   EXPECT_EQ(readFile(path("office_node.pgm")), readFile(path("office_offline.pgm")));
+}
+
+// The same with odometry as tf (odom -> base_link) instead of nav_msgs/Odometry: the node looks
+// each capture's pose up at its instant.
+TEST_F(StereonavNodeTest, OdometryByTfGivesTheSameMap) {
+  const std::string config = kSource + "/ini/office_run.ini";
+  const std::string rawlog = kSource + "/rawlogs/office_run.rawlog";
+  const MappingOptions options = loadMappingOptionsFile(config);
+  ASSERT_EQ(writeRosbagFromRawlog(rawlog, rawlogReaderOptions(options), path("office_tf.bag")), 76u);
+  const nav_msgs::OccupancyGrid offline = offlineMap(rawlog, options, path("office_tf_offline"));
+  const Playback playback =
+      play(path("office_tf.bag"), config, 6.0, 76, path("office_tf_node"), false, Odometry::kTf);
+  expectSameGrid(playback.map, offline);
 }
 
 // A 320x240 trinocular run played at 30 Hz into the node confined to one core: every frame is
