@@ -282,15 +282,21 @@ void expectSameGrid(const nav_msgs::OccupancyGrid& node, const nav_msgs::Occupan
   EXPECT_GT(known, 1000u);  // the map holds the run, not an empty grid
 }
 
-TEST_F(StereonavNodeTest, OfficeRunBagGivesTheOfflineMapCellForCell) {
-  const std::string config = kSource + "/ini/office_run.ini";
-  const std::string rawlog = kSource + "/rawlogs/office_run.rawlog";
-  const MappingOptions options = loadMappingOptionsFile(config);
-  ASSERT_EQ(writeRosbagFromRawlog(rawlog, rawlogReaderOptions(options), path("office.bag")), 76u);
-  const nav_msgs::OccupancyGrid offline = offlineMap(rawlog, options, path("office_offline"));
+// The office run (76 trinocular frames, 160x120) as a bag `<name>.bag`, and its offline map
+// (`<name>_offline.*`).
+const std::string kOfficeConfig = kSource + "/ini/office_run.ini";
 
+nav_msgs::OccupancyGrid officeBagAndOfflineMap(const std::string& prefix) {
+  const std::string rawlog = kSource + "/rawlogs/office_run.rawlog";
+  const MappingOptions options = loadMappingOptionsFile(kOfficeConfig);
+  EXPECT_EQ(writeRosbagFromRawlog(rawlog, rawlogReaderOptions(options), prefix + ".bag"), 76u);
+  return offlineMap(rawlog, options, prefix + "_offline");
+}
+
+TEST_F(StereonavNodeTest, OfficeRunBagGivesTheOfflineMapCellForCell) {
+  const nav_msgs::OccupancyGrid offline = officeBagAndOfflineMap(path("office"));
   // 30 captures per second: 6 times the recorded 5 Hz.
-  const Playback playback = play(path("office.bag"), config, 6.0, 76, path("office_node"), false);
+  const Playback playback = play(path("office.bag"), kOfficeConfig, 6.0, 76, path("office_node"), false);
   expectSameGrid(playback.map, offline);
   EXPECT_EQ(playback.node_exit_status, 0);
   // Ctrl-C wrote the node's map files: the same as `stereonav map`'s.
@@ -300,13 +306,9 @@ TEST_F(StereonavNodeTest, OfficeRunBagGivesTheOfflineMapCellForCell) {
 // The same with odometry as tf (odom -> base_link) instead of nav_msgs/Odometry: the node looks
 // each capture's pose up at its instant.
 TEST_F(StereonavNodeTest, OdometryByTfGivesTheSameMap) {
-  const std::string config = kSource + "/ini/office_run.ini";
-  const std::string rawlog = kSource + "/rawlogs/office_run.rawlog";
-  const MappingOptions options = loadMappingOptionsFile(config);
-  ASSERT_EQ(writeRosbagFromRawlog(rawlog, rawlogReaderOptions(options), path("office_tf.bag")), 76u);
-  const nav_msgs::OccupancyGrid offline = offlineMap(rawlog, options, path("office_tf_offline"));
+  const nav_msgs::OccupancyGrid offline = officeBagAndOfflineMap(path("office_tf"));
   const Playback playback =
-      play(path("office_tf.bag"), config, 6.0, 76, path("office_tf_node"), false, Odometry::kTf);
+      play(path("office_tf.bag"), kOfficeConfig, 6.0, 76, path("office_tf_node"), false, Odometry::kTf);
   expectSameGrid(playback.map, offline);
 }
 
