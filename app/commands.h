@@ -13,8 +13,10 @@ constexpr int kPartialWorkStatus = 3;
 // Each lives in its own <name>_command.cc and is listed in main.cc.
 int runDisparityCommand(const std::vector<std::string>& arguments);
 int runSimulateCommand(const std::vector<std::string>& arguments);
+int runGenerateCommand(const std::vector<std::string>& arguments);
 int runMapCommand(const std::vector<std::string>& arguments);
 int runExploreCommand(const std::vector<std::string>& arguments);
+int runBenchExploreCommand(const std::vector<std::string>& arguments);
 int runScoreCommand(const std::vector<std::string>& arguments);
 int runReportCommand(const std::vector<std::string>& arguments);
 int runConfigCommand(const std::vector<std::string>& arguments);

@@ -1,5 +1,6 @@
 #include "closed_loop/exploration_report.h"
 
+#include <cmath>
 #include <iomanip>
 #include <sstream>
 
@@ -48,7 +49,16 @@ std::string ExplorationReport::toJson() const {
       .key("pipeline_ms_per_frame").value(pipeline_ms_per_frame)
       .key("start_pose").beginArray().value(start_x).value(start_y).value(start_phi).endArray()
       .key("stop_reason").value(stop_reason)
-      .endObject();
+      .key("time_to_coverage_s").beginObject();
+  for (size_t i = 0; i < kCoverageMilestones.size(); ++i) {
+    json.key(std::to_string(static_cast<int>(std::lround(100.0 * kCoverageMilestones[i]))));
+    if (time_to_coverage_s[i]) {
+      json.value(*time_to_coverage_s[i]);
+    } else {
+      json.null();
+    }
+  }
+  json.endObject().endObject();
   return json.str();
 }
 

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -10,7 +12,13 @@ namespace stereonav {
 
 // What a closed-loop exploration achieved (<prefix>.stats.json).
 struct ExplorationReport {
+  // Coverage levels whose first reaching is timed.
+  static constexpr std::array<double, 3> kCoverageMilestones{0.8, 0.9, 0.95};
+
   ExplorationCoverage coverage;
+  // Simulated time at which the coverage first reached each milestone (measured every
+  // ExplorationJob::coverage_sample_period_s); nothing if it never did.
+  std::array<std::optional<double>, kCoverageMilestones.size()> time_to_coverage_s;
   double start_x = 0.0;
   double start_y = 0.0;
   double start_phi = 0.0;

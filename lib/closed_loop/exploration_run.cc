@@ -11,6 +11,7 @@
 #include "closed_loop/simulated_robot_interface.h"
 #include "column_projection/virtual_range_scan.h"
 #include "common/atomic_file.h"
+#include "common/image_file.h"
 #include "explorer/frontier_explorer.h"
 #include "mapping/map_outputs.h"
 #include "mapping/stereo_mapper.h"
@@ -50,12 +51,6 @@ mrpt::poses::CPose2D seededStart(const World& world, const GroundTruthMap& truth
   return mrpt::poses::CPose2D(world.start_pose[0], world.start_pose[1], heading(random));
 }
 
-void saveImage(const cv::Mat& image, const std::string& file) {
-  writeFileAtomically(file, [&](const std::string& temporary) {
-    if (!cv::imwrite(temporary, image)) throw std::runtime_error(file + ": cannot write the image");
-  });
-}
-
 // The map (white free, black occupied, grey unknown, top row = max y) with the path it was built along.
 void savePathImage(const DisparityTaggedGrid& grid, const std::vector<mrpt::poses::CPose2D>& path,
                    const std::string& file) {
@@ -80,7 +75,7 @@ void savePathImage(const DisparityTaggedGrid& grid, const std::vector<mrpt::pose
     cv::circle(image, pixel(path.front()), 2 * kScale, cv::Scalar(0, 160, 0), -1);
     cv::circle(image, pixel(path.back()), 2 * kScale, cv::Scalar(255, 0, 0), -1);
   }
-  saveImage(image, file);
+  writeImageFile(file, image);
 }
 
 // The mapping side of the loop: every frame goes through the stereo pipeline into the map, and
@@ -131,12 +126,21 @@ void fillFromSimulation(ExplorationReport& report, const Simulation& simulation,
   report.collisions = simulation.robot().collisionCount();
 }
 
+// Times the milestones `coverage` reaches first at `time_s`.
+void recordMilestones(ExplorationReport& report, const ExplorationCoverage& coverage, double time_s) {
+  for (size_t i = 0; i < ExplorationReport::kCoverageMilestones.size(); ++i) {
+    if (!report.time_to_coverage_s[i] && coverage.coverage >= ExplorationReport::kCoverageMilestones[i]) {
+      report.time_to_coverage_s[i] = time_s;
+    }
+  }
+}
+
 // <prefix>.path.png: the map with the path; <prefix>.plan.png: the explorer's last plan, if any.
 void savePathAndPlanImages(const DisparityTaggedGrid& grid, const std::vector<mrpt::poses::CPose2D>& map_path,
                            const FrontierExplorer& explorer, const std::string& prefix) {
   savePathImage(grid, map_path, prefix + ".path.png");
   const cv::Mat3b plan = explorer.planImage();
-  if (!plan.empty()) saveImage(plan, prefix + ".plan.png");
+  if (!plan.empty()) writeImageFile(prefix + ".plan.png", plan);
 }
 
 }  // namespace
@@ -167,6 +171,7 @@ ExplorationReport runExploration(const World& world, const ExplorationConfig& co
   NavigationTrace trace;
 
   ExplorationReport report;
+  double next_coverage_sample_s = job.coverage_sample_period_s;
   while (true) {
     if (simulation.frameDue()) {
       const SimulatedFrame frame = simulation.renderFrame();
@@ -175,6 +180,11 @@ ExplorationReport runExploration(const World& world, const ExplorationConfig& co
       trace.append(frame, map_path.back(), simulation.robot(), robot_interface, explorer.status(),
                    robot_options.radius_m);
       if (callbacks.on_frame) callbacks.on_frame(map_path.size(), frame_limit);
+      if (job.coverage_sample_period_s > 0.0 && simulation.time() >= next_coverage_sample_s) {
+        recordMilestones(report, measureCoverage(truth, mapper.grid(), robot_options.radius_m, start.x(), start.y()),
+                         simulation.time());
+        next_coverage_sample_s += job.coverage_sample_period_s;
+      }
     }
     if (callbacks.stop_requested && callbacks.stop_requested()) {
       report.stop_reason = "interrupted";
@@ -197,6 +207,7 @@ ExplorationReport runExploration(const World& world, const ExplorationConfig& co
   report.pipeline_ms_per_frame = mapper.mapper().times().meanFrameMs();
   const DisparityTaggedGrid grid = mapper.grid();
   report.coverage = measureCoverage(truth, grid, robot_options.radius_m, start.x(), start.y());
+  recordMilestones(report, report.coverage, simulation.time());
   saveMapOutputs(mapper.mapper().map(), config.mapping.grid.stereo.update.scale, map_path, job.output_prefix);
   trace.save(job.output_prefix);
   savePathAndPlanImages(grid, map_path, explorer, job.output_prefix);

@@ -25,6 +25,9 @@ struct ExplorationJob {
   // Seeds the camera noise and odometry errors, and moves the start up to 0.5 m from the world's
   // start pose with any heading (on free floor); without it, the ini's seeds and start pose.
   std::optional<int> seed;
+  // Simulated seconds between measurements of the coverage while the run goes on, for
+  // ExplorationReport::time_to_coverage_s (and the end is always measured).
+  double coverage_sample_period_s = 5.0;
 };
 
 // Called from the loop: after each frame is mapped (frames so far, the total the time limit

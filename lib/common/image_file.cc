@@ -1,5 +1,7 @@
 #include "common/image_file.h"
 
+#include "common/atomic_file.h"
+
 #include <opencv2/imgcodecs.hpp>
 
 #include <filesystem>
@@ -17,6 +19,12 @@ cv::Mat readImageFile(const std::string& path, int flags) {
   }
   if (image.empty()) throw std::runtime_error(path + ": cannot read the image (not a format OpenCV decodes)");
   return image;
+}
+
+void writeImageFile(const std::string& path, const cv::Mat& image) {
+  writeFileAtomically(path, [&](const std::string& temporary) {
+    if (!cv::imwrite(temporary, image)) throw std::runtime_error(path + ": cannot write the image");
+  });
 }
 
 }  // namespace stereonav

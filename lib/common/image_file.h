@@ -13,4 +13,8 @@ namespace stereonav {
 // warning is not printed, since a missing file is found before OpenCV is asked.
 cv::Mat readImageFile(const std::string& path, int flags);
 
+// Writes `image` to `path` atomically (temporary file + rename), the format from the extension.
+// Throws std::runtime_error naming the file when it cannot be written.
+void writeImageFile(const std::string& path, const cv::Mat& image);
+
 }  // namespace stereonav

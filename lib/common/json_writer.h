@@ -30,6 +30,8 @@ class JsonWriter {
                                          : std::to_string(static_cast<unsigned long long>(number)));
   }
   JsonWriter& null() { return raw("null"); }
+  // A value written elsewhere as JSON text (e.g. another report's toJson()), inserted as it is.
+  JsonWriter& json(const std::string& text) { return raw(text); }
 
   // The document, ending in a newline. Throws std::logic_error while a container is open.
   std::string str() const;
