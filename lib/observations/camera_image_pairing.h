@@ -31,9 +31,9 @@ struct PairedCapture {
 
 // Groups separately recorded camera images into captures. Each reference image takes, from every
 // partner label, the image closest to it in time within the tolerance, decided once every partner
-// has an image past that window or one of the very same instant (or at the end); without a match it is skipped (a capture with
-// `missing` set). A partner image no reference image took is reported the same
-// way. Images arriving slightly out of order are sorted by time; images of other labels are
+// has an image past that window or one of the very same instant (or at the end); without a match
+// it is skipped (a capture with `missing` set). A partner image no reference image took is
+// reported the same way. Images arriving slightly out of order are sorted by time; images of other labels are
 // ignored.
 class CameraImagePairer {
  public:
