@@ -58,6 +58,7 @@ class RosFrameAssembler {
   // The next frame that is ready, oldest first.
   std::optional<RigFrame> next();
 
+  size_t cameras() const { return options_.cameras; }
   const SkippedFrames& skipped() const { return skipped_; }
   // Frames paired and waiting for their odometry.
   size_t waiting() const { return frames_.size(); }

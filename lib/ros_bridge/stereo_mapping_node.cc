@@ -55,9 +55,8 @@ StereoMappingNode::StereoMappingNode(ros::NodeHandle& node, const MappingOptions
     : mapping_(mapping), options_(options), assembler_(headOptions(mapping, options)) {
   // The stereo scan is published every frame, so the mapper makes it whatever the grid model.
   mapping_.mapper.virtual_scans = true;
-  const size_t cameras = rosHeadOptions(mapping).cameras;
   constexpr uint32_t kQueue = 100;  // a burst of captures waits rather than being dropped
-  for (size_t camera = 0; camera < cameras; ++camera) {
+  for (size_t camera = 0; camera < assembler_.cameras(); ++camera) {
     const std::string prefix = std::string("stereo/") + kRosCameraNames[camera];
     subscribers_.push_back(node.subscribe<sensor_msgs::Image>(
         prefix + "/image_rect", kQueue, [this, camera](const sensor_msgs::Image::ConstPtr& image) {
