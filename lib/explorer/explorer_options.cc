@@ -37,6 +37,7 @@ void readPartTunables(IniSection& section, ExplorerOptions& options) {
   options.failed_escape_m = section.getNonNegative("failed_escape_m", options.failed_escape_m);
   options.speck_cells = section.getInt("speck_cells", options.speck_cells);
   if (options.speck_cells < 0) throw ConfigError("[" + section.name() + "] speck_cells: must not be negative");
+  options.look_from_afar_m = section.getNonNegative("look_from_afar_m", options.look_from_afar_m);
 }
 
 }  // namespace

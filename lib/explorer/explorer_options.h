@@ -140,6 +140,12 @@ struct ExplorerOptions {
   // Obstacle islands of up to this many cells are specks (NavigationGrid::freeSpecks), planned
   // past when nothing else is reachable.
   int speck_cells = 2;
+  // When no frontier is reachable, not even by the bare body past specks, each is looked at
+  // from the nearest place the body reaches within this distance of it, one frontier at a
+  // time, before the robot gives up: a closer view often opens what far readings closed (a
+  // door's jambs a cell too wide, streaks of unseen floor between far readings' columns). A
+  // frontier still there after that look is given up. 0: give up at once.
+  double look_from_afar_m = 2.0;
 };
 
 // Section [explorer]: robot_radius_m, safety_margin_m, repulsion_distance_m, repulsion_weight,
@@ -153,7 +159,7 @@ struct ExplorerOptions {
 // blocked_command_mps, blocked_speed_mps, blocked_s, back_off_speed_mps, back_off_s,
 // facing_tolerance_deg, min_turn_rate, turn_braking, look_around_spacing_m, escape_speed_mps,
 // resolving_views, look_hold_s, arrived_m, progress_m, visit_spacing_m, escape_search_m,
-// failed_escape_m, speck_cells.
+// failed_escape_m, speck_cells, look_from_afar_m.
 ExplorerOptions loadExplorerOptions(IniSection& section);
 
 }  // namespace stereonav

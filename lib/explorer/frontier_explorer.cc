@@ -56,7 +56,7 @@ void FrontierExplorer::updateMap(const DisparityTaggedGrid& grid, const mrpt::po
   seen_free_.update(grid, pose);
   grid_ = std::make_unique<NavigationGrid>(grid, visited_, grid_options_, guard_.rememberedObstacles(),
                                            seen_free_.cells());
-  if (relaxation_ == Relaxation::kBareBodyPastSpecks) grid_->freeSpecks(options_.speck_cells);
+  if (relaxation_ >= Relaxation::kBareBodyPastSpecks) grid_->freeSpecks(options_.speck_cells);
   map_frontiers_ = findFrontiers(*grid_, options_.min_frontier_cells);
   awaiting_map_ = false;
   frontier_memory_.countCloseViews(*grid_, map_frontiers_, pose);
@@ -68,7 +68,8 @@ void FrontierExplorer::replan() {
   CostToGoOptions planner = planner_options_;
   if (relaxation_ != Relaxation::kNone) planner.body_radius_m = options_.robot_radius_m;
   field_ = std::make_unique<CostToGoField>(*grid_, planner);
-  field_->compute(goals_.goals(*grid_, *field_, frontiers_, planner.body_radius_m, frontier_memory_));
+  const double look_from_m = relaxation_ == Relaxation::kLookFromAfar ? options_.look_from_afar_m : 0.0;
+  field_->compute(goals_.goals(*grid_, *field_, frontiers_, planner.body_radius_m, frontier_memory_, look_from_m));
   status_.frontiers = frontiers_.size();
 }
 
@@ -240,7 +241,7 @@ VelocityCommand FrontierExplorer::recoverUnreachable(const mrpt::poses::CPose2D&
     // still keeps it off what the scans show. Until the next frontier is reached.
     relaxation_ = Relaxation::kBareBody;
     replan();
-  } else if (relaxation_ != Relaxation::kBareBodyPastSpecks) {
+  } else if (relaxation_ < Relaxation::kBareBodyPastSpecks) {
     // Boxed in by specks: lone obstacle cells amid free space, each inflated by the body's
     // radius, in the gaps beside furniture. Up close they are below the cameras' view, so no
     // look clears them; most are stereo mismatches that repeated. Plan past them; the guard
@@ -253,11 +254,17 @@ VelocityCommand FrontierExplorer::recoverUnreachable(const mrpt::poses::CPose2D&
     });
     map_frontiers_ = findFrontiers(*grid_, options_.min_frontier_cells);
     replan();
+  } else if (relaxation_ == Relaxation::kBareBodyPastSpecks && options_.look_from_afar_m > 0.0) {
+    // Nothing reachable even so: look at each frontier from the nearest place the body reaches,
+    // one at a time; what a closer view does not open is given up (lookAtFrontier).
+    relaxation_ = Relaxation::kLookFromAfar;
+    replan();
   } else {
     size_t cells = 0;
     for (const Frontier& frontier : frontiers_) cells += frontier.cells.size();
-    finish("no reachable frontier left: " + std::to_string(frontiers_.size()) + " frontier(s) of " +
-           std::to_string(cells) + " cells lie beyond gaps narrower than the robot or across unknown space");
+    finish("no reachable frontier left: " + std::to_string(frontiers_.size()) + " frontier(s) of " + std::to_string(cells) +
+           " cells lie beyond gaps narrower than the robot or across unknown space, none within " +
+           metres(options_.look_from_afar_m) + " m of where the robot can go");
   }
   return {};
 }
@@ -287,7 +294,7 @@ VelocityCommand FrontierExplorer::lookAtFrontier(const mrpt::poses::CPose2D& pos
   if (time_s - phase_start_time_ >= options_.look_hold_s) {
     // The faced cell goes in any case, so that every look makes progress.
     frontier_memory_.drop(*grid_, nearest_cell);
-    dropFrontier(label, pose, nearest_sq < 1e-6);
+    dropFrontier(label, pose, nearest_sq < 1e-6 || relaxation_ == Relaxation::kLookFromAfar);
     status_.phase = ExplorerPhase::kTurning;
   }
   return {};

@@ -61,8 +61,9 @@ class FrontierExplorer {
 
  private:
   // How far planning is relaxed, until the next frontier is reached: no frontier was reachable
-  // with the safety margin, or then with the bare body either.
-  enum class Relaxation { kNone, kBareBody, kBareBodyPastSpecks };
+  // with the safety margin, then with the bare body, then past specks either; last, frontiers
+  // are looked at from afar (look_from_afar_m).
+  enum class Relaxation { kNone, kBareBody, kBareBodyPastSpecks, kLookFromAfar };
 
   void replan();
   // The command of one cycle before the blocked watch: backing off, or decided and guarded.

@@ -1,5 +1,6 @@
 #include "explorer/goal_selection.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -32,10 +33,14 @@ bool GoalSelection::isTarget(const NavigationGrid& grid, const Frontier& frontie
 
 std::vector<GoalCell> GoalSelection::goals(const NavigationGrid& grid, const CostToGoField& field,
                                            const std::vector<Frontier>& frontiers, double body_radius_m,
-                                           const FrontierMemory& memory) const {
+                                           const FrontierMemory& memory, double look_from_m) const {
   const double goal_radius = body_radius_m + options_.goal_distance_m;
-  const int reach = static_cast<int>(std::ceil(goal_radius / grid.resolution()));
-  const double reach_sq = goal_radius * goal_radius / (grid.resolution() * grid.resolution());
+  const double reach_m = std::max(goal_radius, look_from_m);
+  const int reach = static_cast<int>(std::ceil(reach_m / grid.resolution()));
+  const double reach_sq = reach_m * reach_m / (grid.resolution() * grid.resolution());
+  // Looking from afar, a step nearer the frontier is worth more than any step of path costs
+  // (at most 1 + repulsion_weight per metre): the nearest place the body reaches wins.
+  const double distance_cost = look_from_m > 0.0 ? 2.0 * (1.0 + options_.repulsion_weight) : 0.0;
   // Per cell the cheapest seed and its frontier: goals of overlapping frontiers are not repeated.
   cv::Mat1d seed(grid.height(), grid.width(), std::numeric_limits<double>::infinity());
   cv::Mat1i label(grid.height(), grid.width(), -1);
@@ -48,8 +53,9 @@ std::vector<GoalCell> GoalSelection::goals(const NavigationGrid& grid, const Cos
         for (int dc = -reach; dc <= reach; ++dc) {
           const int c = cell.x + dc, r = cell.y + dr;
           if (dc * dc + dr * dr > reach_sq || !grid.contains(c, r) || !field.traversable(c, r)) continue;
-          if (seed_cost < seed(r, c)) {
-            seed(r, c) = seed_cost;
+          const double cost = seed_cost + std::hypot(dc, dr) * grid.resolution() * distance_cost;
+          if (cost < seed(r, c)) {
+            seed(r, c) = cost;
             label(r, c) = static_cast<int>(i);
           }
         }

@@ -33,9 +33,12 @@ class GoalSelection {
 
   // The goal cells of every frontier (label = index into `frontiers`) for a body of
   // `body_radius_m`, each cell with the cheapest seed cost of the frontiers it is near.
+  // `look_from_m` > 0: every traversable cell within that distance of a frontier is a goal too,
+  // its distance to the frontier added to its seed, so that the nearest place the body reaches
+  // is preferred (look_from_afar_m).
   std::vector<GoalCell> goals(const NavigationGrid& grid, const CostToGoField& field,
                               const std::vector<Frontier>& frontiers, double body_radius_m,
-                              const FrontierMemory& memory) const;
+                              const FrontierMemory& memory, double look_from_m = 0.0) const;
 
   // The path now ends at `goal`, near frontier `label`.
   void aimAt(const cv::Point2d& goal, int label);

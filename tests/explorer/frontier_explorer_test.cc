@@ -109,13 +109,38 @@ TEST(FrontierExplorerTest, LooksAroundOnceThenStopsWhenNoFrontierIsLeftAndSaysWh
   EXPECT_EQ(robot.speed_, 0.0);
 }
 
-TEST(FrontierExplorerTest, StopsWhenTheOnlyFrontierIsBeyondADoorTooNarrowForTheBody) {
+// Walled area, east wall at x = 5.0 with a 0.5 m door (the bare body needs 0.7 m of free cells),
+// a walled passage beyond it to x = 6.1, then unknown: the frontier (x = 6.05) is 1.4 m past the
+// last cell where the body fits (x = 4.65, 0.35 m from the wall's cells).
+TestGrid doorTooNarrowForTheBody() {
   TestGrid cells(70, 40);
-  // Walled area, east wall at x = 5.0 with a 0.5 m door (the inflated body needs 0.8 m), a walled
-  // passage beyond it to x = 6.1, then unknown: the frontier is 1.5 m past the last cell where the
-  // body fits, out of the goals' reach.
   cells.occupied(0, 0, 60, 39).free(1, 1, 49, 38).free(50, 18, 60, 22).unknown(61, 18, 61, 22);
+  return cells;
+}
+
+TEST(FrontierExplorerTest, LooksFromTheNearestPlaceItReachesAtAFrontierBeyondADoorTooNarrowThenGivesItUp) {
+  const TestGrid cells = doorTooNarrowForTheBody();
   FrontierExplorer explorer(testOptions());
+  KinematicRobot robot({2.0, 2.0, M_PI / 2});
+  bool faced_the_frontier_from_the_door = false;
+  int steps = 0;
+  for (; steps < 6000 && !explorer.finished(); ++steps) {
+    if (steps % 4 == 0) explorer.updateMap(cells.grid(), mrpt::poses::CPose2D(robot.pose_));  // 5 Hz
+    if (!explorer.controlStep(robot)) break;
+    robot.step(0.05);
+    faced_the_frontier_from_the_door |= explorer.status().phase == ExplorerPhase::kLookingAtFrontier &&
+                                        robot.pose_.x > 4.4 && std::abs(robot.pose_.phi) < 0.3;
+  }
+  EXPECT_TRUE(faced_the_frontier_from_the_door) << robot.pose_.asString();
+  EXPECT_EQ(explorer.stopReason().rfind("no frontier left: the rest were looked at", 0), 0u)
+      << explorer.stopReason() << " " << phaseName(explorer.status().phase) << " " << robot.pose_.asString();
+}
+
+TEST(FrontierExplorerTest, StopsWhenTheOnlyFrontierIsBeyondADoorTooNarrowAndFartherThanItLooksFrom) {
+  const TestGrid cells = doorTooNarrowForTheBody();
+  ExplorerOptions options = testOptions();
+  options.look_from_afar_m = 1.0;  // the frontier is 1.4 m beyond the last place the body fits
+  FrontierExplorer explorer(options);
   KinematicRobot robot({2.0, 2.0, 0.0});
   explorer.updateMap(cells.grid(), mrpt::poses::CPose2D(robot.pose_));
   int steps = 0;
@@ -125,6 +150,7 @@ TEST(FrontierExplorerTest, StopsWhenTheOnlyFrontierIsBeyondADoorTooNarrowForTheB
   }
   EXPECT_EQ(explorer.stopReason().rfind("no reachable frontier left", 0), 0u)
       << explorer.stopReason() << " " << phaseName(explorer.status().phase) << " " << robot.pose_.asString();
+  EXPECT_NEAR(robot.pose_.x, 2.0, 1e-9);
 }
 
 TEST(FrontierExplorerTest, WhenNothingElseIsReachableItPlansPastALoneSpeckInAPassage) {
