@@ -16,13 +16,13 @@ namespace {
 
 constexpr const char* kUsage =
     "usage: stereonav bench-explore --config C.ini --out DIR [--worlds 1-20] [--seeds 1]\n"
-    "                               [--max-time S] [--jobs N]\n"
+    "                               [--max-time S] [--jobs N] [--poses odometry|localized|ground_truth]\n"
     "Explores generated worlds ('stereonav generate', seeds --worlds, e.g. 1-20 or 3,7,9) once per\n"
     "seed of --seeds, N runs at a time (default: one per core), each on one thread, with the\n"
-    "ini C.ini of 'stereonav explore'. Writes into DIR every world and run (as 'stereonav\n"
-    "generate' and 'stereonav explore' do), runs.csv and runs.json (coverage, seen, time to\n"
-    "80/90/95% coverage, distance, collisions and what was hit, stop reason, simulated and wall\n"
-    "time), summary.md (the table, mean, worst, median time to 90%) and montage.png (every map\n"
+    "ini C.ini of 'stereonav explore' (--poses overrides its [explorer] pose_source). Writes into\n"
+    "DIR every world and run (as 'stereonav generate' and 'stereonav explore' do), runs.csv and\n"
+    "runs.json (coverage, seen, time to 80/90/95% coverage, distance, collisions and what was hit,\n"
+    "pose error, stop reason, simulated and wall time), summary.md (the table, mean, worst, median time to 90%) and montage.png (every map\n"
     "with its path). Fix the worlds and seeds of a comparison before tuning.\n";
 
 // "1-20" or "3,7,9" (or both: "1-5,9").
@@ -63,9 +63,11 @@ int runBenchExploreCommand(const std::vector<std::string>& arguments) {
   job.max_time_s = command_line.doubleValue("max-time", 1e-3, 86400.0);
   job.parallel_runs = static_cast<size_t>(
       command_line.intValue("jobs", 1, 256).value_or(static_cast<int>(std::max(1u, std::thread::hardware_concurrency()))));
+  const std::optional<std::string> poses = command_line.value("poses");
   command_line.rejectUnknown();
 
-  const ExplorationConfig config = loadExplorationConfig(config_path);
+  ExplorationConfig config = loadExplorationConfig(config_path);
+  if (poses) config.pose_source = parsePosesOption(*poses);
   std::filesystem::create_directories(job.output_directory);
   std::optional<ProgressMeter> progress;
   const auto on_run = [&](size_t done, size_t total) {

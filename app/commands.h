@@ -3,6 +3,8 @@
 #include <string>
 #include <vector>
 
+#include "mapping/rawlog_mapping.h"
+
 namespace stereonav::app {
 
 // Exit status of a job stopped before its end (a damaged input, Ctrl-C or SIGTERM) whose outputs
@@ -22,5 +24,8 @@ int runReportCommand(const std::vector<std::string>& arguments);
 int runConfigCommand(const std::vector<std::string>& arguments);
 int runConvertCommand(const std::vector<std::string>& arguments);
 int runCalibrateCommand(const std::vector<std::string>& arguments);
+
+// The value of --poses (odometry | localized | ground_truth); throws UsageError naming the option.
+MapPoseSource parsePosesOption(const std::string& text);
 
 }  // namespace stereonav::app

@@ -16,7 +16,7 @@ namespace {
 
 constexpr const char* kUsage =
     "usage: stereonav explore --config C.ini --world W.ini --out PREFIX [--record OUT.rawlog]\n"
-    "                         [--max-time S] [--seed N]\n"
+    "                         [--max-time S] [--seed N] [--poses odometry|localized|ground_truth]\n"
     "Explores the simulated world closed-loop (paper section 5): every frame the rig's images go\n"
     "through the stereo mapping pipeline, and the explorer drives the robot towards the nearest\n"
     "reachable frontier of the newest map until none is left. C.ini holds the simulator's sections\n"
@@ -30,7 +30,7 @@ constexpr const char* kUsage =
     "at all; distance, times, collisions and what they touched, stop reason). --record writes the\n"
     "frames with odometry as a rawlog (+ OUT.gt.txt) that 'stereonav map' replays to the same map.\n"
     "--seed N seeds the noise and moves the start up to 0.5 m with any heading; --max-time\n"
-    "overrides [simulation] max_duration_s. On a terminal a progress line shows frames, rate and\n"
+    "overrides [simulation] max_duration_s, --poses [explorer] pose_source. On a terminal a progress line shows frames, rate and\n"
     "ETA. Ctrl-C or SIGTERM ends the run early with every output written (exit status 3).\n";
 
 }  // namespace
@@ -48,10 +48,12 @@ int runExploreCommand(const std::vector<std::string>& arguments) {
   job.record_rawlog = command_line.value("record").value_or("");
   job.max_time_s = command_line.doubleValue("max-time", 1e-3, 86400.0);
   job.seed = command_line.intValue("seed");
+  const std::optional<std::string> poses = command_line.value("poses");
   command_line.rejectUnknown();
   if (job.max_time_s && !(*job.max_time_s > 0.0)) throw UsageError("--max-time: must be positive");
 
-  const ExplorationConfig config = loadExplorationConfig(config_path);
+  ExplorationConfig config = loadExplorationConfig(config_path);
+  if (poses) config.pose_source = parsePosesOption(*poses);
   if (!job.record_rawlog.empty()) SimulationRecorder::checkRecordable(config.simulator.rig, config_path);
   const World world = loadWorld(world_path);
   std::optional<ProgressMeter> progress;

@@ -76,12 +76,8 @@ MapRequest parseMapRequest(CommandLine& command_line) {
   request.truth_path = command_line.value("use-ground-truth-poses");
   const std::optional<std::string> pose_source = command_line.value("poses");
   command_line.rejectUnknown();
-  try {
-    job.pose_source = pose_source ? parseMapPoseSource(*pose_source)
-                                  : (request.truth_path ? MapPoseSource::kGroundTruth : MapPoseSource::kOdometry);
-  } catch (const std::invalid_argument& error) {
-    throw UsageError(std::string("--poses: ") + error.what());
-  }
+  job.pose_source = pose_source ? parsePosesOption(*pose_source)
+                                : (request.truth_path ? MapPoseSource::kGroundTruth : MapPoseSource::kOdometry);
   if (job.pose_source == MapPoseSource::kGroundTruth && !request.truth_path) {
     throw UsageError("--poses ground_truth needs --use-ground-truth-poses GT.txt");
   }
@@ -147,6 +143,14 @@ int runMapCommand(const std::vector<std::string>& arguments) {
               << trajectoryError(report.path, truth).toText();
   }
   return report.complete() ? 0 : kPartialWorkStatus;
+}
+
+MapPoseSource parsePosesOption(const std::string& text) {
+  try {
+    return parseMapPoseSource(text);
+  } catch (const std::invalid_argument& error) {
+    throw UsageError(std::string("--poses: ") + error.what());
+  }
 }
 
 }  // namespace stereonav::app

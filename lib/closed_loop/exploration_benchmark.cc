@@ -46,8 +46,8 @@ std::string runsCsv(const std::vector<ExplorationBenchmarkRun>& runs) {
   for (size_t i = 0; i < ExplorationReport::kCoverageMilestones.size(); ++i) {
     columns.push_back("time_to_" + milestoneName(i) + "_s");
   }
-  for (const char* column : {"distance_m", "collisions", "collided_with", "stop_reason", "sim_time_s",
-                             "wall_time_s", "error"}) {
+  for (const char* column : {"distance_m", "collisions", "collided_with", "pose_error_rms_m", "pose_error_max_m",
+                             "stop_reason", "sim_time_s", "wall_time_s", "error"}) {
     columns.push_back(column);
   }
   CsvWriter csv(columns);
@@ -56,7 +56,8 @@ std::string runsCsv(const std::vector<ExplorationBenchmarkRun>& runs) {
     csv.add(run.world_seed).add(run.world_kind).add(run.run_seed).add(report.coverage.coverage)
         .add(report.coverage.seen_coverage);
     for (const auto& time : report.time_to_coverage_s) csv.add(time.value_or(std::nan("")));
-    csv.add(report.distance_m).add(report.collisions).add(collidedWith(report)).add(report.stop_reason)
+    csv.add(report.distance_m).add(report.collisions).add(collidedWith(report))
+        .add(report.trajectory_error.rms_m).add(report.trajectory_error.max_m).add(report.stop_reason)
         .add(report.sim_time_s).add(report.wall_time_s).add(run.error);
     csv.endRow();
   }

@@ -2,8 +2,6 @@
 
 #include "common/ini_section.h"
 
-
-
 namespace stereonav {
 
 ExplorationConfig loadExplorationConfig(const std::string& path) {
@@ -12,13 +10,10 @@ ExplorationConfig loadExplorationConfig(const std::string& path) {
   config.simulator = loadSimulatorConfig(file, path);
   config.explorer = loadIniSection(file, "explorer", [&](IniSection& section) {
     ExplorerOptions options = loadExplorerOptions(section);
-    const std::string source = section.getString("pose_source", "odometry");
-    if (source == "odometry") {
-      config.pose_source = PoseSource::kOdometry;
-    } else if (source == "ground_truth") {
-      config.pose_source = PoseSource::kGroundTruth;
-    } else {
-      throw ConfigError("[explorer] pose_source: '" + source + "' is neither odometry nor ground_truth");
+    try {
+      config.pose_source = parseMapPoseSource(section.getString("pose_source", "odometry"));
+    } catch (const std::invalid_argument& error) {
+      throw ConfigError(std::string("[explorer] pose_source: ") + error.what());
     }
     return options;
   }, path);

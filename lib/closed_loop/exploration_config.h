@@ -18,8 +18,9 @@ struct ExplorationConfig {
   SimulatorConfig simulator;
   MappingOptions mapping;
   ExplorerOptions explorer;
-  // [explorer] pose_source = odometry | ground_truth (simulated_robot_interface.h).
-  PoseSource pose_source = PoseSource::kOdometry;
+  // [explorer] pose_source = odometry | localized | ground_truth (simulated_robot_interface.h);
+  // localized matches scans as mapping.localization says.
+  MapPoseSource pose_source = MapPoseSource::kOdometry;
 };
 
 // Throws ConfigError naming the file, section and key.

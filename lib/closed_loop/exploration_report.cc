@@ -13,7 +13,8 @@ std::string ExplorationReport::summary() const {
   text << std::fixed << std::setprecision(1) << "explored " << coverage.free_area_m2 << " m2 free ("
        << 100.0 * coverage.coverage << "% of the reachable free space; " << 100.0 * coverage.seen_coverage
        << "% seen), drove " << distance_m << " m in " << sim_time_s << " s simulated (" << wall_time_s
-       << " s wall), " << collisions << " collision(s); stopped: " << stop_reason;
+       << " s wall), " << collisions << " collision(s), pose error RMS " << std::setprecision(3)
+       << trajectory_error.rms_m << " m (max " << trajectory_error.max_m << " m); stopped: " << stop_reason;
   return text.str();
 }
 
@@ -47,6 +48,14 @@ std::string ExplorationReport::toJson() const {
       .key("frames").value(frames)
       .key("frame_rate_hz").value(frame_rate_hz)
       .key("pipeline_ms_per_frame").value(pipeline_ms_per_frame)
+      .key("trajectory_error").beginObject()
+      .key("rms_m").value(trajectory_error.rms_m)
+      .key("max_m").value(trajectory_error.max_m)
+      .key("final_m").value(trajectory_error.final_m)
+      .key("rms_heading_deg").value(trajectory_error.rms_heading_deg)
+      .key("max_heading_deg").value(trajectory_error.max_heading_deg)
+      .endObject()
+      .key("frames_localized").value(frames_localized)
       .key("start_pose").beginArray().value(start_x).value(start_y).value(start_phi).endArray()
       .key("stop_reason").value(stop_reason)
       .key("time_to_coverage_s").beginObject();

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "evaluation/exploration_coverage.h"
+#include "evaluation/trajectory_error.h"
 #include "simulator/simulation.h"
 
 namespace stereonav {
@@ -29,6 +30,9 @@ struct ExplorationReport {
   double frame_rate_hz = 0.0;
   double pipeline_ms_per_frame = 0.0;  // the mapping pipeline alone
   size_t frames = 0;
+  // Of the poses the map was built at against the true ones, one per frame (zero with true poses).
+  TrajectoryError trajectory_error;
+  size_t frames_localized = 0;  // frames the scan matching corrected (pose_source = localized)
   int collisions = 0;           // contacts the simulator counted (robot_options' footprint)
   std::vector<CollisionEvent> collision_events;
   int blocked_reversals = 0;    // times the explorer found itself blocked and reversed

@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <random>
 
 #include "closed_loop/navigation_trace.h"
@@ -12,7 +13,9 @@
 #include "column_projection/virtual_range_scan.h"
 #include "common/atomic_file.h"
 #include "common/image_file.h"
+#include "evaluation/trajectory_error.h"
 #include "explorer/frontier_explorer.h"
+#include "localization/scan_localizer.h"
 #include "mapping/map_outputs.h"
 #include "mapping/stereo_mapper.h"
 #include "simulator/ground_truth_map.h"
@@ -78,22 +81,42 @@ void savePathImage(const DisparityTaggedGrid& grid, const std::vector<mrpt::pose
   writeImageFile(file, image);
 }
 
+// The mapping options of the loop: a localized run matches each frame's virtual scan.
+MappingOptions closedLoopMappingOptions(const ExplorationConfig& config) {
+  MappingOptions options = config.mapping;
+  if (config.pose_source == MapPoseSource::kLocalized) options.mapper.virtual_scans = true;
+  return options;
+}
+
 // The mapping side of the loop: every frame goes through the stereo pipeline into the map, and
-// the newest scan and map go to the robot's sensor and the explorer.
+// the newest scan and map go to the robot's sensor and the explorer. A localized run first
+// matches the frame's scan against the map so far, as `stereonav map --poses localized` does,
+// so a recorded run replays to the same map and trajectory.
 class ClosedLoopMapper {
  public:
   ClosedLoopMapper(const ExplorationConfig& config, CSimulatedRobotInterface& robot_interface,
                    FrontierExplorer& explorer)
       : config_(config),
-        mapper_(config.mapping, config.simulator.rig),
+        mapper_(closedLoopMappingOptions(config), config.simulator.rig),
         robot_interface_(robot_interface),
-        explorer_(explorer) {}
+        explorer_(explorer) {
+    if (config.pose_source == MapPoseSource::kLocalized) {
+      const CameraRig& rig = config.simulator.rig;
+      localizer_.emplace(config.mapping.localization, rig.reference.focal_px * rig.baseline_m);
+    }
+  }
 
-  // Maps `frame` at the pose the navigator has; returns that pose.
+  // Maps `frame` at the pose the navigator has (after localizing it); returns that pose.
   mrpt::poses::CPose2D process(const SimulatedFrame& frame) {
     const RigFrame rig_frame = rigFrameOf(frame, config_.simulator.rig);
+    mapper_.observe(rig_frame);
+    if (localizer_) {
+      const ScanMatch& match = localizer_->update(frame.odometry, *mapper_.virtualScan(), grid());
+      if (match.corrected) ++frames_localized_;
+      robot_interface_.setLocalizedPose(match.pose, frame.odometry);
+    }
     const mrpt::poses::CPose2D map_pose = robot_interface_.pose();
-    mapper_.process(rig_frame, map_pose);
+    mapper_.insertLastObservation(map_pose);
     mrpt::obs::CObservation2DRangeScan sensed =
         makeVirtualRangeScan(mapper_.disparityScan().scan, config_.simulator.rig, kSensedRangeM);
     sensed.timestamp = rig_frame.timestamp;
@@ -104,12 +127,15 @@ class ClosedLoopMapper {
 
   DisparityTaggedGrid grid() const { return gridOfMap(mapper_.map(), config_.mapping.grid.stereo.update.scale); }
   const StereoMapper& mapper() const { return mapper_; }
+  size_t framesLocalized() const { return frames_localized_; }
 
  private:
   const ExplorationConfig& config_;
   StereoMapper mapper_;
   CSimulatedRobotInterface& robot_interface_;
   FrontierExplorer& explorer_;
+  std::optional<ScanLocalizer> localizer_;
+  size_t frames_localized_ = 0;
 };
 
 void fillFromSimulation(ExplorationReport& report, const Simulation& simulation, const mrpt::poses::CPose2D& start,
@@ -167,7 +193,7 @@ ExplorationReport runExploration(const World& world, const ExplorationConfig& co
   ClosedLoopMapper mapper(config, robot_interface, explorer);
   std::optional<SimulationRecorder> recorder;
   if (!job.record_rawlog.empty()) recorder.emplace(job.record_rawlog, config.simulator.rawlog, config.simulator.rig);
-  std::vector<mrpt::poses::CPose2D> map_path;
+  std::vector<mrpt::poses::CPose2D> map_path, true_path;
   NavigationTrace trace;
 
   ExplorationReport report;
@@ -177,6 +203,7 @@ ExplorationReport runExploration(const World& world, const ExplorationConfig& co
       const SimulatedFrame frame = simulation.renderFrame();
       if (recorder) recorder->record(frame);
       map_path.push_back(mapper.process(frame));
+      true_path.push_back(frame.true_pose);
       trace.append(frame, map_path.back(), simulation.robot(), robot_interface, explorer.status(),
                    robot_options.radius_m);
       if (callbacks.on_frame) callbacks.on_frame(map_path.size(), frame_limit);
@@ -205,6 +232,8 @@ ExplorationReport runExploration(const World& world, const ExplorationConfig& co
 
   fillFromSimulation(report, simulation, start, config.simulator.simulation.frame_rate_hz);
   report.pipeline_ms_per_frame = mapper.mapper().times().meanFrameMs();
+  report.frames_localized = mapper.framesLocalized();
+  if (!map_path.empty()) report.trajectory_error = trajectoryError(map_path, true_path);
   const DisparityTaggedGrid grid = mapper.grid();
   report.coverage = measureCoverage(truth, grid, robot_options.radius_m, start.x(), start.y());
   recordMilestones(report, report.coverage, simulation.time());

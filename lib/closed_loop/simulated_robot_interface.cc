@@ -5,12 +5,26 @@
 #include <cmath>
 
 namespace stereonav {
-CSimulatedRobotInterface::CSimulatedRobotInterface(const Simulation& simulation, PoseSource pose_source)
+CSimulatedRobotInterface::CSimulatedRobotInterface(const Simulation& simulation, MapPoseSource pose_source)
     : simulation_(simulation), pose_source_(pose_source) {}
 
 mrpt::poses::CPose2D CSimulatedRobotInterface::pose() const {
   const DifferentialDriveRobot& robot = simulation_.robot();
-  return pose_source_ == PoseSource::kOdometry ? robot.odometry() : robot.pose();
+  switch (pose_source_) {
+    case MapPoseSource::kOdometry:
+      return robot.odometry();
+    case MapPoseSource::kLocalized:
+      return localized_pose_ + (robot.odometry() - localized_at_odometry_);
+    case MapPoseSource::kGroundTruth:
+      break;
+  }
+  return robot.pose();
+}
+
+void CSimulatedRobotInterface::setLocalizedPose(const mrpt::poses::CPose2D& pose,
+                                                const mrpt::poses::CPose2D& odometry) {
+  localized_pose_ = pose;
+  localized_at_odometry_ = odometry;
 }
 
 bool CSimulatedRobotInterface::getCurrentPoseAndSpeeds(mrpt::math::TPose2D& pose,

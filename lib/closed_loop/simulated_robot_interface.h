@@ -4,27 +4,29 @@
 #include <mrpt/nav/reactive/CRobot2NavInterface.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 
+#include "mapping/rawlog_mapping.h"
 #include "simulator/simulation.h"
 
 namespace stereonav {
 
-// Where the robot's pose comes from: its dead reckoning, as the paper maps and navigates
-// (section 5; it names localization an open problem, section 6.1), or a perfect localization
-// module (the simulator's true pose).
-enum class PoseSource { kOdometry, kGroundTruth };
-
 // The simulated robot behind MRPT's robot-to-navigator interface, so that the explorer drives it
 // exactly as it would drive a real base's driver. As MRPT defines it, the pose is the
-// localization's (here per PoseSource) and the odometry is the raw dead reckoning. Time is the
-// simulation's clock. Velocity commands are held until the simulation steps the robot
-// (commandedSpeed / commandedTurnRate).
+// localization's and the odometry is the raw dead reckoning. The pose comes per MapPoseSource:
+// dead reckoning, as the paper maps and navigates (section 5; it names localization an open
+// problem, section 6.1), odometry corrected by scan matching, or the simulator's true pose (a
+// perfect localization). Time is the simulation's clock. Velocity commands are held until the
+// simulation steps the robot (commandedSpeed / commandedTurnRate).
 class CSimulatedRobotInterface : public mrpt::nav::CRobot2NavInterface {
  public:
   // The robot and the clock of `simulation`, read on every call.
-  CSimulatedRobotInterface(const Simulation& simulation, PoseSource pose_source);
+  CSimulatedRobotInterface(const Simulation& simulation, MapPoseSource pose_source);
 
-  // The pose the navigator gets (and the map must be built at).
+  // The pose the navigator gets (and the map must be built at). Localized: the localizer's last
+  // pose carried forward by the odometry since, as a localization module between its updates.
   mrpt::poses::CPose2D pose() const;
+
+  // Localized only: the localizer put the robot at `pose` when its odometry read `odometry`.
+  void setLocalizedPose(const mrpt::poses::CPose2D& pose, const mrpt::poses::CPose2D& odometry);
 
   // The newest stereo scan as a virtual laser scan (robot frame, column_projection/
   // virtual_range_scan.h), taken with the robot at pose() == `pose`: what senseObstacles reports
@@ -53,7 +55,10 @@ class CSimulatedRobotInterface : public mrpt::nav::CRobot2NavInterface {
 
  private:
   const Simulation& simulation_;
-  PoseSource pose_source_;
+  MapPoseSource pose_source_;
+  // Until the first localization, pose() is the odometry.
+  mrpt::poses::CPose2D localized_pose_;
+  mrpt::poses::CPose2D localized_at_odometry_;
   double speed_ = 0.0;
   double turn_rate_ = 0.0;
   int apparent_collisions_ = 0;

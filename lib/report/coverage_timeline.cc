@@ -25,7 +25,9 @@ std::vector<CoverageSample> replayCoverage(const ExplorationConfig& config, cons
   mapping.output_prefix = job.output_prefix;
   mapping.debug_panel_directory = job.debug_panel_directory;
   mapping.debug_panel_every = job.debug_panel_every;
-  if (config.pose_source == PoseSource::kGroundTruth) mapping.ground_truth_poses = true_poses;
+  // The poses the run mapped with, so the replay rebuilds its map frame by frame.
+  mapping.pose_source = config.pose_source;
+  if (config.pose_source == MapPoseSource::kGroundTruth) mapping.ground_truth_poses = true_poses;
 
   std::vector<CoverageSample> samples;
   const auto sample = [&](double time_s, const mrpt::maps::CMetricMap& map) {

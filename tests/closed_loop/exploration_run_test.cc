@@ -91,6 +91,57 @@ TEST(ExplorationRunTest, ExploresASmallRoomWithoutCollisionAndTheRecordedRunRepl
   EXPECT_EQ(readFile(replay.output_prefix + ".pgm"), explored_map);
 }
 
+// Localized poses come from the scan matcher as `stereonav map --poses localized` runs it, so the
+// recorded run replays to the same map; each run reports the error of the poses it mapped with
+// against the truth, which the files it writes give as well.
+TEST(ExplorationRunTest, ALocalizedRunReplaysToTheSameMapAndEveryRunReportsItsPoseError) {
+  const World world = loadWorld(mrpt::config::CConfigFileMemory(kRoom), "room.ini");
+  ExplorationConfig config = loadExplorationConfig(testing::shippedExplorationConfigPath());
+  // A base whose distances read 3% long and turns 5% large: its dead reckoning drifts at once.
+  config.simulator.robot.odometry_distance_bias = 0.03;
+  config.simulator.robot.odometry_turn_bias = 0.05;
+  const std::string directory = outputDirectory("localized");
+  ExplorationJob job;
+  job.max_time_s = 30.0;
+
+  config.pose_source = MapPoseSource::kGroundTruth;
+  job.output_prefix = directory + "/truth";
+  const ExplorationReport truth = runExploration(world, config, job);
+  EXPECT_EQ(truth.trajectory_error.max_m, 0.0);
+  EXPECT_EQ(truth.trajectory_error.max_heading_deg, 0.0);
+  EXPECT_EQ(truth.frames_localized, 0u);
+
+  config.pose_source = MapPoseSource::kOdometry;
+  job.output_prefix = directory + "/odometry";
+  const ExplorationReport odometry = runExploration(world, config, job);
+  EXPECT_GT(odometry.trajectory_error.max_heading_deg, 1.0) << odometry.summary();
+  const TrajectoryError from_files =
+      trajectoryError(loadPoseList(job.output_prefix + ".path.txt"), loadPoseList(job.output_prefix + ".truth.txt"));
+  EXPECT_NEAR(odometry.trajectory_error.rms_m, from_files.rms_m, 1e-4);
+  EXPECT_NEAR(odometry.trajectory_error.max_heading_deg, from_files.max_heading_deg, 1e-2);
+
+  config.pose_source = MapPoseSource::kLocalized;
+  job.output_prefix = directory + "/localized";
+  job.record_rawlog = directory + "/localized.rawlog";
+  const ExplorationReport localized = runExploration(world, config, job);
+  EXPECT_GT(localized.frames_localized, 0u) << localized.summary();
+  EXPECT_LT(localized.frames_localized, localized.frames);  // the first frame has no map to match
+  MappingJob replay;
+  replay.rawlog_path = job.record_rawlog;
+  replay.output_prefix = directory + "/replay";
+  replay.pose_source = MapPoseSource::kLocalized;
+  const MappingReport replayed = mapRawlog(config.mapping, replay);
+  EXPECT_EQ(replayed.frames_localized, localized.frames_localized);
+  const std::vector<mrpt::poses::CPose2D> explored_path = loadPoseList(job.output_prefix + ".path.txt");
+  ASSERT_EQ(replayed.path.size(), explored_path.size());
+  for (size_t i = 0; i < explored_path.size(); ++i) {
+    EXPECT_NEAR(replayed.path[i].distanceTo(explored_path[i]), 0.0, 1e-4) << "frame " << i;
+  }
+  const std::string explored_map = readFile(job.output_prefix + ".pgm");
+  ASSERT_FALSE(explored_map.empty());
+  EXPECT_EQ(readFile(replay.output_prefix + ".pgm"), explored_map);
+}
+
 TEST(ExplorationRunTest, StopRequestEndsTheRunWithEveryOutputWrittenAndProgressCountsFrames) {
   const World world = loadWorld(mrpt::config::CConfigFileMemory(kRoom), "room.ini");
   const ExplorationConfig config = loadExplorationConfig(testing::shippedExplorationConfigPath());
@@ -146,6 +197,17 @@ TEST(ExplorationRunTest, ConfigErrorsNameTheFileSectionAndKey) {
   } catch (const ConfigError& error) {
     EXPECT_NE(std::string(error.what()).find("typo.ini"), std::string::npos) << error.what();
     EXPECT_NE(std::string(error.what()).find("lookahed_m"), std::string::npos) << error.what();
+  }
+  text = readFile(testing::shippedExplorationConfigPath());
+  text.replace(text.find("pose_source = odometry"), 22, "pose_source = gps");
+  std::ofstream(directory + "/gps.ini") << text;
+  try {
+    loadExplorationConfig(directory + "/gps.ini");
+    FAIL() << "an unknown pose source was accepted";
+  } catch (const ConfigError& error) {
+    EXPECT_NE(std::string(error.what()).find("gps.ini"), std::string::npos) << error.what();
+    EXPECT_NE(std::string(error.what()).find("[explorer] pose_source"), std::string::npos) << error.what();
+    EXPECT_NE(std::string(error.what()).find("localized"), std::string::npos) << error.what();
   }
 }
 
