@@ -1,5 +1,8 @@
 #include "command_line.h"
 
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <limits>
 
 #include "common/ini_section.h"
@@ -82,6 +85,24 @@ void CommandLine::rejectUnknown() const {
   for (const auto& name : flags_) {
     if (!declared_.count(name)) throw UsageError("unknown option --" + name);
   }
+}
+
+void checkWritableFolder(const std::string& folder, const std::string& option) {
+  const std::string where = folder.empty() ? "." : folder;
+  struct stat status {};
+  if (::stat(where.c_str(), &status) != 0 || !S_ISDIR(status.st_mode)) {
+    throw UsageError(option + ": no such folder '" + where + "'");
+  }
+  if (::access(where.c_str(), W_OK) != 0) throw UsageError(option + ": folder '" + where + "' is not writable");
+}
+
+std::string folderOf(const std::string& path) {
+  const size_t slash = path.find_last_of('/');
+  return slash == std::string::npos ? "" : (slash == 0 ? "/" : path.substr(0, slash));
+}
+
+void checkFileName(const std::string& path, const std::string& option) {
+  if (path.empty() || path.back() == '/') throw UsageError(option + ": expected a file name, got '" + path + "'");
 }
 
 }  // namespace stereonav::app

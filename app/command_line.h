@@ -42,4 +42,12 @@ class CommandLine {
   std::set<std::string> declared_;
 };
 
+// Checked before any work, so that a typo in a path does not cost the run: UsageError naming
+// `option` unless `folder` ("" = the current one) exists and is writable.
+void checkWritableFolder(const std::string& folder, const std::string& option);
+// The folder part of `path` ("" for a bare name).
+std::string folderOf(const std::string& path);
+// A prefix or file name, not a folder: "--out maps/" would write hidden files "maps/.gridmap".
+void checkFileName(const std::string& path, const std::string& option);
+
 }  // namespace stereonav::app

@@ -51,6 +51,8 @@ int runExploreCommand(const std::vector<std::string>& arguments) {
   const std::optional<std::string> poses = command_line.value("poses");
   command_line.rejectUnknown();
   if (job.max_time_s && !(*job.max_time_s > 0.0)) throw UsageError("--max-time: must be positive");
+  checkFileName(job.output_prefix, "--out");
+  checkWritableFolder(folderOf(job.output_prefix), "--out");
 
   ExplorationConfig config = loadExplorationConfig(config_path);
   if (poses) config.pose_source = parsePosesOption(*poses);

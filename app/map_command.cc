@@ -1,4 +1,3 @@
-#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -38,26 +37,6 @@ constexpr const char* kUsage =
     "Exit status: 0 the whole rawlog was mapped; 3 partial map (damaged rawlog or Ctrl-C),\n"
     "outputs written; 1 no frame could be mapped (outputs hold an empty map) or any other\n"
     "error; 2 usage error.\n";
-
-// Checked before any work, so that a typo in a path does not cost the run.
-void checkWritableFolder(const std::string& folder, const std::string& option) {
-  const std::string where = folder.empty() ? "." : folder;
-  struct stat status {};
-  if (::stat(where.c_str(), &status) != 0 || !S_ISDIR(status.st_mode)) {
-    throw UsageError(option + ": no such folder '" + where + "'");
-  }
-  if (::access(where.c_str(), W_OK) != 0) throw UsageError(option + ": folder '" + where + "' is not writable");
-}
-
-std::string folderOf(const std::string& path) {
-  const size_t slash = path.find_last_of('/');
-  return slash == std::string::npos ? "" : (slash == 0 ? "/" : path.substr(0, slash));
-}
-
-// A prefix or file name, not a folder: "--out maps/" would write hidden files "maps/.gridmap".
-void checkFileName(const std::string& path, const std::string& option) {
-  if (path.empty() || path.back() == '/') throw UsageError(option + ": expected a file name, got '" + path + "'");
-}
 
 struct MapRequest {
   std::string config_path;

@@ -319,6 +319,15 @@ TEST_F(ReproTest, B19BadOutputPathsFailBeforeAnyWork) {
                      {"--virtual-scans", "/nonexistent"});
   expectOneLineError(map(config, rawlog, {"--debug-panels", path("missing")}), 2, {"--debug-panels", "missing"});
   EXPECT_FALSE(fs::exists(path("map.gridmap")));
+  // An exploration would run for minutes before finding it cannot write its outputs.
+  const std::vector<std::string> explore{"explore", "--config", kRoot + "ini/explore_160x120.ini", "--world",
+                                         kRoot + "ini/worlds/table_room.ini", "--out"};
+  std::vector<std::string> arguments = explore;
+  arguments.push_back(path("missing/run"));
+  expectOneLineError(runStereonav(arguments), 2, {"--out", "missing"});
+  arguments = explore;
+  arguments.push_back(path("runs/"));
+  expectOneLineError(runStereonav(arguments), 2, {"--out"});
 }
 
 }  // namespace
