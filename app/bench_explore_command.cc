@@ -22,8 +22,9 @@ constexpr const char* kUsage =
     "ini C.ini of 'stereonav explore' (--poses overrides its [explorer] pose_source). Writes into\n"
     "DIR every world and run (as 'stereonav generate' and 'stereonav explore' do), runs.csv and\n"
     "runs.json (coverage, seen, time to 80/90/95% coverage, distance, collisions and what was hit,\n"
-    "pose error, stop reason, simulated and wall time), summary.md (the table, mean, worst, median time to 90%) and montage.png (every map\n"
-    "with its path). Fix the worlds and seeds of a comparison before tuning.\n";
+    "pose error, stop reason, simulated and wall time), summary.md (the table, mean, worst, median\n"
+    "time to 90%) and montage.png (every map with its path). Fix the worlds and seeds of a\n"
+    "comparison before tuning.\n";
 
 // "1-20" or "3,7,9" (or both: "1-5,9").
 std::vector<int> parseSeedList(const std::string& text, const std::string& option) {

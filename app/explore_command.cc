@@ -30,8 +30,9 @@ constexpr const char* kUsage =
     "at all; distance, times, collisions and what they touched, stop reason). --record writes the\n"
     "frames with odometry as a rawlog (+ OUT.gt.txt) that 'stereonav map' replays to the same map.\n"
     "--seed N seeds the noise and moves the start up to 0.5 m with any heading; --max-time\n"
-    "overrides [simulation] max_duration_s, --poses [explorer] pose_source. On a terminal a progress line shows frames, rate and\n"
-    "ETA. Ctrl-C or SIGTERM ends the run early with every output written (exit status 3).\n";
+    "overrides [simulation] max_duration_s, --poses [explorer] pose_source. On a terminal a\n"
+    "progress line shows frames, rate and ETA. Ctrl-C or SIGTERM ends the run early with every\n"
+    "output written (exit status 3).\n";
 
 }  // namespace
 
