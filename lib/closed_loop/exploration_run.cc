@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <memory>
 #include <optional>
 #include <random>
 
@@ -102,7 +103,8 @@ class ClosedLoopMapper {
         explorer_(explorer) {
     if (config.pose_source == MapPoseSource::kLocalized) {
       const CameraRig& rig = config.simulator.rig;
-      localizer_.emplace(config.mapping.localization, rig.reference.focal_px * rig.baseline_m);
+      localizer_ = std::make_unique<ScanLocalizer>(config.mapping.localization,
+                                                   rig.reference.focal_px * rig.baseline_m);
     }
   }
 
@@ -134,7 +136,7 @@ class ClosedLoopMapper {
   StereoMapper mapper_;
   CSimulatedRobotInterface& robot_interface_;
   FrontierExplorer& explorer_;
-  std::optional<ScanLocalizer> localizer_;
+  std::unique_ptr<ScanLocalizer> localizer_;  // localized runs only
   size_t frames_localized_ = 0;
 };
 
