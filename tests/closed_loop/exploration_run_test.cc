@@ -176,39 +176,37 @@ TEST(ExplorationRunTest, StopRequestEndsTheRunWithEveryOutputWrittenAndProgressC
   EXPECT_EQ(mapRawlog(config.mapping, replay).frames_mapped, 4u);
 }
 
+// The shipped exploration config with `from` replaced by `to`, written as `name` in `directory`
+// and loaded: the ConfigError's message, or "" if it loaded.
+std::string configErrorAfterEdit(const std::string& directory, const std::string& name,
+                                 const std::string& from, const std::string& to) {
+  std::string text = readFile(testing::shippedExplorationConfigPath());
+  text.replace(text.find(from), from.size(), to);
+  std::ofstream(directory + "/" + name) << text;
+  try {
+    loadExplorationConfig(directory + "/" + name);
+  } catch (const ConfigError& error) {
+    return error.what();
+  }
+  return "";
+}
+
 TEST(ExplorationRunTest, ConfigErrorsNameTheFileSectionAndKey) {
   const std::string directory = outputDirectory("config");
-  std::string text = readFile(testing::shippedExplorationConfigPath());
-  text.replace(text.find("robot_radius_m = 0.3"), 20, "robot_radius_m = 0.2");
-  std::ofstream(directory + "/small_radius.ini") << text;
-  try {
-    loadExplorationConfig(directory + "/small_radius.ini");
-    FAIL() << "a radius below the robot's was accepted";
-  } catch (const ConfigError& error) {
-    EXPECT_NE(std::string(error.what()).find("small_radius.ini: [explorer] robot_radius_m"), std::string::npos)
-        << error.what();
-  }
-  text = readFile(testing::shippedExplorationConfigPath());
-  text.replace(text.find("lookahead_m"), 11, "lookahed_m");
-  std::ofstream(directory + "/typo.ini") << text;
-  try {
-    loadExplorationConfig(directory + "/typo.ini");
-    FAIL() << "an unknown key was accepted";
-  } catch (const ConfigError& error) {
-    EXPECT_NE(std::string(error.what()).find("typo.ini"), std::string::npos) << error.what();
-    EXPECT_NE(std::string(error.what()).find("lookahed_m"), std::string::npos) << error.what();
-  }
-  text = readFile(testing::shippedExplorationConfigPath());
-  text.replace(text.find("pose_source = odometry"), 22, "pose_source = gps");
-  std::ofstream(directory + "/gps.ini") << text;
-  try {
-    loadExplorationConfig(directory + "/gps.ini");
-    FAIL() << "an unknown pose source was accepted";
-  } catch (const ConfigError& error) {
-    EXPECT_NE(std::string(error.what()).find("gps.ini"), std::string::npos) << error.what();
-    EXPECT_NE(std::string(error.what()).find("[explorer] pose_source"), std::string::npos) << error.what();
-    EXPECT_NE(std::string(error.what()).find("localized"), std::string::npos) << error.what();
-  }
+  const std::string small_radius =
+      configErrorAfterEdit(directory, "small_radius.ini", "robot_radius_m = 0.3", "robot_radius_m = 0.2");
+  EXPECT_NE(small_radius.find("small_radius.ini: [explorer] robot_radius_m"), std::string::npos)
+      << "a radius below the robot's: '" << small_radius << "'";
+
+  const std::string typo = configErrorAfterEdit(directory, "typo.ini", "lookahead_m", "lookahed_m");
+  EXPECT_NE(typo.find("typo.ini"), std::string::npos) << "an unknown key: '" << typo << "'";
+  EXPECT_NE(typo.find("lookahed_m"), std::string::npos) << typo;
+
+  const std::string gps =
+      configErrorAfterEdit(directory, "gps.ini", "pose_source = odometry", "pose_source = gps");
+  EXPECT_NE(gps.find("gps.ini"), std::string::npos) << "an unknown pose source: '" << gps << "'";
+  EXPECT_NE(gps.find("[explorer] pose_source"), std::string::npos) << gps;
+  EXPECT_NE(gps.find("localized"), std::string::npos) << gps;
 }
 
 }  // namespace
