@@ -69,6 +69,8 @@ struct PreparedFrame {
   bool subpixel = false;
   bool second_best = false;  // find the runner-up score (SadMatch::second_score)
   bool sum_scores = true;    // add up all candidates' scores (SadMatch::score_sum)
+  bool scanline = false;     // CostAggregation::kScanline, with its jump costs per window pixel and camera
+  double scanline_p1 = 0, scanline_p2 = 0;
   // Binocular horizontal rig with the left-right check: +1 if candidate d of pixel x is pixel
   // x - d of the secondary image, -1 if x + d; 0 = no reverse match (SadMatch::reverse_disparity).
   int reverse_sign = 0;
@@ -245,6 +247,7 @@ struct AccumulatorLanes<int16_t> {
   // OpenCV's 16-bit + and - saturate; running sums need modular arithmetic, which is exact as
   // long as the true result fits.
   static Vec add(const Vec& a, const Vec& b) { return cv::v_add_wrap(a, b); }
+  static Vec subtract(const Vec& a, const Vec& b) { return cv::v_sub_wrap(a, b); }
   static Vec slide(const Vec& sum, const Vec& entering, const Vec& leaving) {
     return cv::v_sub_wrap(cv::v_add_wrap(sum, entering), leaving);
   }
@@ -270,6 +273,7 @@ struct AccumulatorLanes<int32_t> {
     for (int i = 0; i < 4; ++i) out[i] = cv::v_reinterpret_as_s32(parts[i]);
   }
   static Vec add(const Vec& a, const Vec& b) { return a + b; }
+  static Vec subtract(const Vec& a, const Vec& b) { return a - b; }
   static Vec slide(const Vec& sum, const Vec& entering, const Vec& leaving) { return sum + entering - leaving; }
   static cv::v_int32x4 widenSum(const Vec& v) { return v; }
   static Vec all(int value) { return cv::v_setall_s32(value); }
@@ -326,6 +330,7 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
   thread_local std::vector<Acc> ring_buffer, column_sum_buffer, score_buffer, combined_buffer;
   thread_local std::vector<uchar> table_buffer;
   thread_local std::vector<Acc> reverse_score_buffer, reverse_index_buffer;
+  thread_local std::vector<Acc> row_cost_buffer, forward_path_buffer, backward_path_buffer;
   Acc* const ring = scratch(ring_buffer, groups * window * row_size);
   std::fill(ring, ring + groups * window * row_size, Acc{0});  // nothing leaves before the first rows
   // Column xe of group g is at column_sums + g * column_stride + (xe + 1) * padded; column -1 stays
@@ -335,6 +340,18 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
   std::fill(column_sums, column_sums + groups * column_stride, Acc{0});
   Acc* const scores = scratch(score_buffer, static_cast<size_t>(groups) * padded);
   Acc* const combined = scratch(combined_buffer, padded);
+  // Scanline: the scores of every pixel of a row, the paths from the left, and the last two of
+  // the path from the right. A path's candidates sit between guard lanes that hold the largest
+  // score, so that the neighbours of its first and last candidates are read without a test.
+  const size_t row_pixels = frame.scanline ? static_cast<size_t>(region.x1 - region.x0) : 0;
+  const size_t path_stride = static_cast<size_t>(padded) + 2 * Lanes::kCount;
+  Acc* const row_costs = scratch(row_cost_buffer, row_pixels * padded);
+  Acc* const forward_paths = scratch(forward_path_buffer, row_pixels * path_stride) + Lanes::kCount;
+  Acc* const backward_paths = scratch(backward_path_buffer, 2 * path_stride) + Lanes::kCount;
+  if (frame.scanline) {
+    std::fill(forward_paths - Lanes::kCount, forward_paths - Lanes::kCount + row_pixels * path_stride, kMaxScore);
+    std::fill(backward_paths - Lanes::kCount, backward_paths - Lanes::kCount + 2 * path_stride, kMaxScore);
+  }
   uchar* const tables = scratch(table_buffer, cameras * row_size);
 
   const int chunks = padded / Lanes::kCount;
@@ -422,9 +439,116 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
     }
   };
 
-  // Horizontal running sum of the column sums, winner-takes-all and sum of scores for row y.
+  // Winner-takes-all over the scores `curve` of reference pixel x of row y (kept lanes of the padded
+  // candidates), the sum of scores, the runner-up, and the reverse match's best-so-far entries.
   const bool subpixel = frame.subpixel, second_best = frame.second_best, sum_scores = frame.sum_scores;
   const int min_disparity = frame.min_disparity;
+  const int chunk_count = chunks, unpadded_chunks = whole_chunks;
+  // `descending`: the pixels of the row come in order of decreasing x.
+  const auto decide = [&](int y, int x, const Acc* curve, bool descending) __attribute__((always_inline)) {
+    const int reverse_first = reverse_sign > 0 ? region.x1 - 1 - x : x - region.x0;
+    Vec candidate_index = lane_index;
+    Vec best = Lanes::all(kMaxScore);
+    cv::v_int32x4 score_sum = cv::v_setall_s32(0);
+    for (int chunk = 0; chunk < chunk_count; ++chunk) {
+      const int b = chunk * Lanes::kCount;
+      Vec score = cv::v_load(curve + b);
+      if (chunk >= unpadded_chunks) {
+        // Scores are never negative: OR with the all-ones-but-sign padding makes those lanes
+        // the largest score, AND with its complement makes them zero.
+        const Vec& pad = padding[chunk - unpadded_chunks];
+        if (sum_scores) score_sum += Lanes::widenSum(score & ~pad);
+        score = score | pad;
+      } else if (sum_scores) {
+        score_sum += Lanes::widenSum(score);
+      }
+      best = cv::v_min(best, score);
+      if (reverse_sign) {
+        // With x increasing, candidates reach a secondary pixel in order of increasing disparity
+        // for sign +1, so a strict < keeps the smallest of tied ones; for -1, or x decreasing, <=.
+        Acc* const entry_scores = reverse_scores + reverse_first + b;
+        Acc* const entry_indices = reverse_indices + reverse_first + b;
+        const Vec previous = cv::v_load(entry_scores);
+        const Vec better = (reverse_sign > 0) != descending ? score < previous : score <= previous;
+        cv::v_store(entry_scores, cv::v_min(previous, score));
+        cv::v_store(entry_indices, cv::v_select(better, candidate_index, cv::v_load(entry_indices)));
+        candidate_index = Lanes::add(candidate_index, Lanes::all(Lanes::kCount));
+      }
+    }
+    // The lowest score, then the first (smallest) disparity that has it: the lanes equal to it
+    // as a bit mask, 64 candidates at a time, without data-dependent branches inside a block.
+    const Acc best_score = static_cast<Acc>(cv::v_reduce_min(best));
+    const int j = firstLaneEqual<Lanes>(curve, chunk_count, Lanes::all(best_score));
+    float disparity = static_cast<float>(min_disparity + j);
+    if (subpixel && j > 0 && j < disparities - 1) {
+      const double before = curve[j - 1], after = curve[j + 1];
+      const double curvature = before + after - 2.0 * best_score;
+      if (curvature > 0) disparity += static_cast<float>(0.5 * (before - after) / curvature);
+    }
+    out.disparity(y, x) = disparity;
+    out.best_score(y, x) = static_cast<int>(best_score);
+    out.score_sum(y, x) = cv::v_reduce_sum(score_sum);
+    if (second_best) {
+      // The lowest score with the best and its two neighbours (and the padding) masked out;
+      // only the chunks holding those neighbours need the mask.
+      const int near_first = std::max(j - 1, 0) / Lanes::kCount, near_last = (j + 1) / Lanes::kCount;
+      const Vec low = Lanes::all(j - 1), high = Lanes::all(j + 1), highest = Lanes::all(kMaxScore);
+      Vec runner_up = highest;
+      for (int chunk = 0; chunk < chunk_count; ++chunk) {
+        Vec score = cv::v_load(curve + chunk * Lanes::kCount);
+        if (chunk >= unpadded_chunks) score = score | padding[chunk - unpadded_chunks];
+        if (chunk >= near_first && chunk <= near_last) {
+          const Vec index = Lanes::add(lane_index, Lanes::all(chunk * Lanes::kCount));
+          score = cv::v_select((index >= low) & (index <= high), highest, score);
+        }
+        runner_up = cv::v_min(runner_up, score);
+      }
+      const Acc second = static_cast<Acc>(cv::v_reduce_min(runner_up));
+      out.second_score(y, x) = second == kMaxScore ? std::numeric_limits<int>::max() : static_cast<int>(second);
+    }
+  };
+
+  // Scanline optimisation: the cost of a path reaching pixel x at candidate d from its neighbour
+  // `previous` along the row is cost(d) + min(previous(d), previous(d +- 1) + p1, min previous + p2)
+  // - min previous (Hirschmuller 2008, eq. 13; subtracting the minimum keeps it bounded by the
+  // largest score + p2). `previous` has one guard lane before and after its candidates.
+  const bool scanline = frame.scanline;
+  const int scale = window * window * (groups == 1 ? cameras : kept);
+  const Vec small_jump = Lanes::all(static_cast<int>(std::lround(frame.scanline_p1 * scale)));
+  const Vec large_jump = Lanes::all(static_cast<int>(std::lround(frame.scanline_p2 * scale)));
+  // Padding lanes of a path hold the largest score, so that no real candidate is reached through them.
+  // All ones in the lanes of real candidates: padding lanes of paths may wrap to negative values,
+  // which the OR / AND with `padding` alone would not clear.
+  Vec real_lanes[kVectorsPerBytes];
+  for (int k = 0; k < chunk_count - unpadded_chunks; ++k) real_lanes[k] = padding[k] == Lanes::all(0);
+  const auto padded_lanes = [&](const Vec& value, int chunk) {
+    if (chunk < unpadded_chunks) return value;
+    const Vec& pad = padding[chunk - unpadded_chunks];
+    return (value & real_lanes[chunk - unpadded_chunks]) | pad;
+  };
+  // Writes the path reaching a pixel of scores `cost` from its neighbour's path `previous`, whose
+  // lowest entry is `lowest` (none for the first pixel), and returns the new path's lowest entry.
+  const auto followPath = [&](const Acc* cost, const Acc* previous, Acc lowest, Acc* path) {
+    const Vec lowest_all = Lanes::all(lowest);
+    const Vec jump_floor = Lanes::add(lowest_all, large_jump);
+    Vec new_lowest = Lanes::all(kMaxScore);
+    for (int chunk = 0; chunk < chunk_count; ++chunk) {
+      const int b = chunk * Lanes::kCount;
+      Vec value = cv::v_load(cost + b);
+      if (previous) {
+        const Vec neighbours = cv::v_min(cv::v_load(previous + b - 1), cv::v_load(previous + b + 1));
+        const Vec reach = cv::v_min(cv::v_min(cv::v_load(previous + b), Lanes::add(neighbours, small_jump)), jump_floor);
+        value = Lanes::add(value, Lanes::subtract(reach, lowest_all));
+      }
+      value = padded_lanes(value, chunk);
+      new_lowest = cv::v_min(new_lowest, value);
+      cv::v_store(path + b, value);
+    }
+    return static_cast<Acc>(cv::v_reduce_min(new_lowest));
+  };
+
+  // Horizontal running sum of the column sums gives every candidate's window score of each pixel
+  // of row y; the winner is taken at once, or after the scanline paths over the whole row.
   const auto matchRow = [&](int y, auto combine_groups) {
     constexpr bool kCombine = decltype(combine_groups)::value;
     for (int g = 0; g < groups; ++g) {
@@ -438,37 +562,35 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
         cv::v_store(scores + g * padded + b, total);
       }
     }
-    const Acc* const curve = kCombine ? combined : scores;  // the combined score of every candidate
     // Locals, so that the compiler keeps them in registers across the stores below.
     Acc* const group_scores = scores;
     const Acc* const all_sums = column_sums;
     const size_t stride = column_stride;
-    const int count = padded, chunk_count = chunks, unpadded_chunks = whole_chunks;
-    float* disparity_row = out.disparity.ptr<float>(y);
-    int* best_row = out.best_score.ptr<int>(y);
-    int* sum_row = out.score_sum.ptr<int>(y);
-    int* second_row = second_best ? out.second_score.ptr<int>(y) : nullptr;
+    const int count = padded;
     Vec sorted[kMaxCameras];
+    Acc forward_lowest = 0;
     if (reverse_sign) std::fill(reverse_scores, reverse_scores + reverse_size, kMaxScore);
     for (int x = region.x0; x < region.x1; ++x) {
-      const int reverse_first = reverse_sign > 0 ? region.x1 - 1 - x : x - region.x0;
-      Vec candidate_index = lane_index;
       // Columns entering and leaving the window, relative to each group's column sums.
       const size_t entering = static_cast<size_t>(x - x0 + 2 * r + 1) * count;
       const size_t leaving = static_cast<size_t>(x - x0) * count;
-      Vec best = Lanes::all(kMaxScore);
-      cv::v_int32x4 score_sum = cv::v_setall_s32(0);
+      // The pixel's combined scores: in the group scores themselves for one group, else in a
+      // buffer of their own; for the scanline, in the row's costs.
+      Acc* const pixel_costs = scanline ? row_costs + static_cast<size_t>(x - region.x0) * count
+                                        : (kCombine ? combined : group_scores);
       for (int chunk = 0; chunk < chunk_count; ++chunk) {
         const int b = chunk * Lanes::kCount;
-        Vec score;
-        for (int g = 0; g < groups; ++g) {
-          Acc* const group_score = group_scores + g * count + b;
-          const Acc* const sums = all_sums + g * stride + b;
-          Vec value = Lanes::slide(cv::v_load(group_score), cv::v_load(sums + entering), cv::v_load(sums + leaving));
-          cv::v_store(group_score, value);
-          if constexpr (!kCombine) {
-            score = value;
-          } else {
+        if constexpr (!kCombine) {
+          const Vec value = Lanes::slide(cv::v_load(group_scores + b), cv::v_load(all_sums + b + entering),
+                                         cv::v_load(all_sums + b + leaving));
+          cv::v_store(group_scores + b, value);
+          if (scanline) cv::v_store(pixel_costs + b, value);
+        } else {
+          for (int g = 0; g < groups; ++g) {
+            Acc* const group_score = group_scores + g * count + b;
+            const Acc* const sums = all_sums + g * stride + b;
+            Vec value = Lanes::slide(cv::v_load(group_score), cv::v_load(sums + entering), cv::v_load(sums + leaving));
+            cv::v_store(group_score, value);
             // Insert into the `kept` lowest so far (a min/max insertion network).
             for (int k = 0; k < std::min(g, kept); ++k) {
               const Vec low = cv::v_min(sorted[k], value);
@@ -477,75 +599,50 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
             }
             if (g < kept) sorted[g] = value;
           }
-        }
-        if constexpr (kCombine) {
-          score = sorted[0];
+          Vec score = sorted[0];
           for (int k = 1; k < kept; ++k) score = Lanes::add(score, sorted[k]);
-          cv::v_store(combined + b, score);
-        }
-        if (chunk >= unpadded_chunks) {
-          // Scores are never negative: OR with the all-ones-but-sign padding makes those lanes
-          // the largest score, AND with its complement makes them zero.
-          const Vec& pad = padding[chunk - unpadded_chunks];
-          if (sum_scores) score_sum += Lanes::widenSum(score & ~pad);
-          score = score | pad;
-        } else if (sum_scores) {
-          score_sum += Lanes::widenSum(score);
-        }
-        best = cv::v_min(best, score);
-        if (reverse_sign) {
-          // Candidates reach a secondary pixel in order of increasing x: for sign +1 that is
-          // increasing disparity, so a strict < keeps the smallest of tied ones; for -1, <=.
-          Acc* const entry_scores = reverse_scores + reverse_first + b;
-          Acc* const entry_indices = reverse_indices + reverse_first + b;
-          const Vec previous = cv::v_load(entry_scores);
-          const Vec better = reverse_sign > 0 ? score < previous : score <= previous;
-          cv::v_store(entry_scores, cv::v_min(previous, score));
-          cv::v_store(entry_indices, cv::v_select(better, candidate_index, cv::v_load(entry_indices)));
-          candidate_index = Lanes::add(candidate_index, Lanes::all(Lanes::kCount));
+          cv::v_store(pixel_costs + b, score);
         }
       }
-      // The lowest score, then the first (smallest) disparity that has it: the lanes equal to it
-      // as a bit mask, 64 candidates at a time, without data-dependent branches inside a block.
-      const Acc best_score = static_cast<Acc>(cv::v_reduce_min(best));
-      const int j = firstLaneEqual<Lanes>(curve, chunk_count, Lanes::all(best_score));
-      float disparity = static_cast<float>(min_disparity + j);
-      if (subpixel && j > 0 && j < disparities - 1) {
-        const double before = curve[j - 1], after = curve[j + 1];
-        const double curvature = before + after - 2.0 * best_score;
-        if (curvature > 0) disparity += static_cast<float>(0.5 * (before - after) / curvature);
-      }
-      disparity_row[x] = disparity;
-      best_row[x] = static_cast<int>(best_score);
-      sum_row[x] = cv::v_reduce_sum(score_sum);
-      if (second_best) {
-        // The lowest score with the best and its two neighbours (and the padding) masked out;
-        // only the chunks holding those neighbours need the mask.
-        const int near_first = std::max(j - 1, 0) / Lanes::kCount, near_last = (j + 1) / Lanes::kCount;
-        const Vec low = Lanes::all(j - 1), high = Lanes::all(j + 1), highest = Lanes::all(kMaxScore);
-        Vec runner_up = highest;
-        for (int chunk = 0; chunk < chunk_count; ++chunk) {
-          Vec score = cv::v_load(curve + chunk * Lanes::kCount);
-          if (chunk >= unpadded_chunks) score = score | padding[chunk - unpadded_chunks];
-          if (chunk >= near_first && chunk <= near_last) {
-            const Vec index = Lanes::add(lane_index, Lanes::all(chunk * Lanes::kCount));
-            score = cv::v_select((index >= low) & (index <= high), highest, score);
-          }
-          runner_up = cv::v_min(runner_up, score);
-        }
-        const Acc second = static_cast<Acc>(cv::v_reduce_min(runner_up));
-        second_row[x] = second == kMaxScore ? std::numeric_limits<int>::max() : static_cast<int>(second);
+      if (!scanline) {
+        decide(y, x, pixel_costs, false);
+      } else {
+        // The path from the left, in the same sweep as the window scores.
+        const size_t i = static_cast<size_t>(x - region.x0);
+        forward_lowest = followPath(pixel_costs, i == 0 ? nullptr : forward_paths + (i - 1) * path_stride,
+                                    forward_lowest, forward_paths + i * path_stride);
       }
     }
-    if (reverse_sign) {
-      float* reverse_row = out.reverse_disparity.ptr<float>(y);
-      const int width = out.reverse_disparity.cols;
-      for (size_t p = 0; p < reverse_size; ++p) {
-        const int pixel = reverse_sign > 0 ? region.x1 - 1 - min_disparity - static_cast<int>(p)
-                                           : region.x0 + min_disparity + static_cast<int>(p);
-        if (pixel < 0 || pixel >= width || reverse_scores[p] == kMaxScore) continue;
-        reverse_row[pixel] = static_cast<float>(min_disparity + reverse_indices[p]);
+    if (!scanline) return;
+    // The path from the right, added to the one from the left, gives the aggregated scores; the
+    // winner is taken in the same sweep.
+    Acc backward_lowest = 0;
+    for (int x = region.x1 - 1; x >= region.x0; --x) {
+      const size_t i = static_cast<size_t>(x - region.x0);
+      const bool first = x == region.x1 - 1;
+      Acc* const path = backward_paths + (i % 2) * path_stride;
+      const Acc* const previous = first ? nullptr : backward_paths + ((i + 1) % 2) * path_stride;
+      backward_lowest = followPath(row_costs + i * padded, previous, backward_lowest, path);
+      const Acc* const forward = forward_paths + i * path_stride;
+      for (int chunk = 0; chunk < chunk_count; ++chunk) {
+        const int b = chunk * Lanes::kCount;
+        const Vec sum = Lanes::add(cv::v_load(forward + b), cv::v_load(path + b));
+        // Padding lanes (the largest score twice, wrapped) become zero; decide() pads them again.
+        cv::v_store(combined + b, chunk < unpadded_chunks ? sum : sum & real_lanes[chunk - unpadded_chunks]);
       }
+      decide(y, x, combined, true);
+    }
+  };
+
+  const auto writeReverse = [&](int y) {
+    if (!reverse_sign) return;
+    float* reverse_row = out.reverse_disparity.ptr<float>(y);
+    const int width = out.reverse_disparity.cols;
+    for (size_t p = 0; p < reverse_size; ++p) {
+      const int pixel = reverse_sign > 0 ? region.x1 - 1 - min_disparity - static_cast<int>(p)
+                                         : region.x0 + min_disparity + static_cast<int>(p);
+      if (pixel < 0 || pixel >= width || reverse_scores[p] == kMaxScore) continue;
+      reverse_row[pixel] = static_cast<float>(min_disparity + reverse_indices[p]);
     }
   };
 
@@ -557,6 +654,7 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
     } else {
       matchRow(y, std::true_type{});
     }
+    writeReverse(y);
   }
 }
 
@@ -580,6 +678,9 @@ void prepareFrame(const StereoFrame& frame, const StereoOptions& options, Prepar
   prepared.subpixel = options.subpixel;
   prepared.second_best = options.second_best_ratio < 1.0;
   prepared.sum_scores = options.uniqueness_threshold < 1.0;
+  prepared.scanline = options.aggregation == CostAggregation::kScanline;
+  prepared.scanline_p1 = options.scanline_p1;
+  prepared.scanline_p2 = options.scanline_p2;
   const auto prefilter = [&](const cv::Mat1b& image, cv::Mat1b& filtered) {
     prefilterImage(image, options.prefilter, options.prefilter_cap, options.texture_sigma, filtered);
   };
@@ -645,7 +746,14 @@ const SadMatch& SadMatcher::match(const StereoFrame& frame) {
   const long long largest_score = static_cast<long long>(options.window) * options.window *
                                   maxPrefilteredDifference(options.prefilter, options.prefilter_cap) *
                                   static_cast<long long>(frame.secondaries.size());
-  const bool narrow = largest_score <= std::numeric_limits<int16_t>::max();
+  // With the scanline, a score is the sum of two paths, each at most the largest window score plus
+  // the large-jump cost.
+  const long long largest_total =
+      options.aggregation == CostAggregation::kScanline
+          ? 2 * (largest_score + static_cast<long long>(std::ceil(options.scanline_p2 * options.window *
+                                                                    options.window * frame.secondaries.size())))
+          : largest_score;
+  const bool narrow = largest_total <= std::numeric_limits<int16_t>::max();
   const int stripes = std::min(options.threads, height);
   const auto matchStripes = [&](const cv::Range& range) {
     for (int stripe = range.start; stripe < range.end; ++stripe) {

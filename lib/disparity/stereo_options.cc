@@ -21,6 +21,8 @@ const std::map<std::string, Prefilter> kPrefilterNames{
     {"none", Prefilter::kNone}, {"xsobel", Prefilter::kXSobel}, {"log", Prefilter::kLog}};
 const std::map<std::string, CameraCombination> kCombinationNames{
     {"sum", CameraCombination::kSum}, {"best_half", CameraCombination::kBestHalf}};
+const std::map<std::string, CostAggregation> kAggregationNames{
+    {"window", CostAggregation::kWindow}, {"scanline", CostAggregation::kScanline}};
 
 template <typename Enum>
 std::string nameOf(Enum value, const std::map<std::string, Enum>& names) {
@@ -59,6 +61,11 @@ StereoOptions loadStereoOptions(IniSection& section) {
   options.combination =
       parseEnum(section.getString("combination", nameOf(options.combination, kCombinationNames)),
                 kCombinationNames, prefix + "combination");
+  options.aggregation =
+      parseEnum(section.getString("aggregation", nameOf(options.aggregation, kAggregationNames)),
+                kAggregationNames, prefix + "aggregation");
+  options.scanline_p1 = section.getDouble("scanline_p1", options.scanline_p1);
+  options.scanline_p2 = section.getDouble("scanline_p2", options.scanline_p2);
   options.texture_threshold = section.getDouble("texture_threshold", options.texture_threshold);
   options.texture_sigma = section.getDouble("texture_sigma", options.texture_sigma);
   options.uniqueness_threshold = section.getDouble("uniqueness_threshold", options.uniqueness_threshold);
@@ -92,6 +99,13 @@ void validateStereoOptions(const StereoOptions& options, const std::string& sect
     fail("window", "must be odd and in 3.." + std::to_string(kMaxWindow));
   }
   if (options.prefilter_cap < 1 || options.prefilter_cap > 127) fail("prefilter_cap", "must be in 1..127");
+  // A jump costs at most the largest difference of one pixel: that bound keeps the aggregated
+  // scores (two paths, each at most the largest window score plus the large-jump cost) inside 32
+  // bits for any window and rig.
+  if (!(options.scanline_p1 >= 0 && options.scanline_p1 <= 255)) fail("scanline_p1", "must be in 0..255");
+  if (!(options.scanline_p2 >= options.scanline_p1 && options.scanline_p2 <= 255)) {
+    fail("scanline_p2", "must be in scanline_p1..255");
+  }
   if (!(options.texture_threshold >= 0)) fail("texture_threshold", "must be >= 0");
   if (!(options.texture_sigma > 0 && options.texture_sigma <= 100)) fail("texture_sigma", "must be in (0, 100]");
   if (!(options.uniqueness_threshold > 0)) fail("uniqueness_threshold", "must be positive");

@@ -22,6 +22,15 @@ enum class Prefilter { kNone, kXSobel, kLog };
 // still matched by the cameras that see it.
 enum class CameraCombination { kSum, kBestHalf };
 
+// How the scores of a candidate disparity are gathered before the winner is taken. kWindow is the
+// paper's: the SAD over the square window alone. kScanline adds, along each image row, the cost of
+// changing disparity from pixel to pixel (scanline optimisation: the two horizontal paths of
+// Hirschmuller's semi-global matching, from the left and from the right): a jump of one disparity
+// costs scanline_p1, a larger jump scanline_p2. A surface then keeps its disparity across pixels
+// whose own windows are ambiguous, and a window straddling a depth edge no longer drags the
+// background to the foreground's disparity.
+enum class CostAggregation { kWindow, kScanline };
+
 // Everything that controls the stereo engine; loaded from the [stereo] ini section.
 struct StereoOptions {
   StereoBackend backend = StereoBackend::kSad;
@@ -33,6 +42,13 @@ struct StereoOptions {
   int prefilter_cap = 31;  // clip of the prefiltered image, 1..127
 
   CameraCombination combination = CameraCombination::kSum;
+
+  CostAggregation aggregation = CostAggregation::kWindow;
+  // Jump costs of kScanline per pixel of the window and per camera, in prefiltered grey levels
+  // (a score is a sum over window pixels and cameras, so the costs scale with both and one value
+  // suits any window, rig and number of disparities). scanline_p2 >= scanline_p1.
+  double scanline_p1 = 4;
+  double scanline_p2 = 32;
 
   // Validation (paper section 2.2). Texture: the mean of |LoG| of the reference image over the
   // window (grey levels per pixel) must exceed texture_threshold; 0 keeps every pixel.
@@ -65,7 +81,7 @@ struct StereoOptions {
 
 // Loads and validates the [stereo] section; throws ConfigError "[stereo] key: why". Keys are the
 // member names above; enums as text: backend = sad | bm | sgbm, prefilter = none | xsobel | log,
-// combination = sum | best_half.
+// combination = sum | best_half, aggregation = window | scanline.
 StereoOptions loadStereoOptions(IniSection& section);
 
 // Bounds on the disparity range and the SAD window, pixels.

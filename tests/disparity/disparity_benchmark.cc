@@ -3,14 +3,16 @@
 // and 1280x720 with 128 (today's stereo cameras). The images are the tsukuba views resized (the
 // time does not depend on the content); one thread unless the name says Threads (all cores).
 //   - OurPaper:     binocular SAD, 7x7, texture + quality-of-match tests (the paper's path)
-//   - OurImproved:  ini/stereo_real_images.ini: 9x9, distinctiveness test, left-right check
-//                   from the same scores (the accuracy configuration of docs/stereo.md)
+//   - OurImproved:  ini/stereo_real_images.ini as shipped (the accuracy configuration of
+//                   docs/stereo.md: 5x5, scanline aggregation, distinctiveness test, left-right
+//                   check from the same scores), with the range set per size
 //   - OurTrinocular: the paper's path with the L-shaped Triclops head (left and top cameras)
 //   - OpenCvStereoBm: its defaults at 9x9 (x-Sobel, texture 10, uniqueness 15), no speckle filter
 //   - OpenCvStereoSgbm: 3x3 blocks, MODE_SGBM
 // Compare medians; the argument is the width (320, 640 or 1280):
 //   bench_disparity --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
+#include <mrpt/config/CConfigFile.h>
 #include <opencv2/calib3d.hpp>
 #include <opencv2/core/utility.hpp>
 #include <opencv2/imgcodecs.hpp>
@@ -54,13 +56,11 @@ StereoOptions paperOptions(int width) {
 }
 
 StereoOptions improvedOptions(int width) {
-  StereoOptions options;  // ini/stereo_real_images.ini
+  const mrpt::config::CConfigFile config(std::string(STEREONAV_SOURCE_DIR) + "/ini/stereo_real_images.ini");
+  IniSection section(config, "stereo");
+  StereoOptions options = loadStereoOptions(section);
+  options.min_disparity = 0;
   options.max_disparity = disparities(width) - 1;
-  options.window = 9;
-  options.texture_threshold = 0;
-  options.uniqueness_threshold = 1;
-  options.second_best_ratio = 0.9;
-  options.left_right_check = true;
   return options;
 }
 

@@ -158,18 +158,26 @@ BruteForce bruteForce(const std::vector<cv::Mat1b>& images, const std::vector<Se
   return result;
 }
 
-void expectMatchesBruteForce(const std::vector<SecondaryCamera>& cameras, StereoOptions options) {
-  cv::RNG rng(11);
+// A frame of uniform noise for every camera; `images` receives the reference, then the secondaries.
+StereoFrame noiseFrame(const std::vector<SecondaryCamera>& cameras, cv::Size size, uint64_t seed,
+                       std::vector<cv::Mat1b>& images) {
+  cv::RNG rng(seed);
   StereoFrame frame;
-  frame.reference.create(60, 80);
+  frame.reference.create(size);
   rng.fill(frame.reference, cv::RNG::UNIFORM, 0, 256);
-  std::vector<cv::Mat1b> images{frame.reference};
+  images = {frame.reference};
   for (const SecondaryCamera& camera : cameras) {
-    cv::Mat1b image(60, 80);
+    cv::Mat1b image(size);
     rng.fill(image, cv::RNG::UNIFORM, 0, 256);
     frame.secondaries.push_back({image, camera});
     images.push_back(image);
   }
+  return frame;
+}
+
+void expectMatchesBruteForce(const std::vector<SecondaryCamera>& cameras, StereoOptions options) {
+  std::vector<cv::Mat1b> images;
+  const StereoFrame frame = noiseFrame(cameras, cv::Size(80, 60), 11, images);
   options.prefilter = Prefilter::kNone;  // compare raw grey levels
   options.second_best_ratio = 0.9;        // so that the runner-up is found
   const SadMatch match = SadMatcher(options).match(frame);
@@ -304,6 +312,173 @@ TEST(SadMatcherTest, CalibrationRoundingOffAUnitBaselineMatchesTheUnitBaseline) 
   const cv::Rect interior(0, 0, kSize.width - 1, kSize.height);  // (x = w-1 is a border case for b)
   EXPECT_EQ(cv::norm(a.best_score(interior), b.best_score(interior), cv::NORM_INF), 0.0);
   EXPECT_EQ(cv::norm(a.score_sum(interior), b.score_sum(interior), cv::NORM_INF), 0.0);
+}
+
+// The scanline aggregation computed the slow way along row y, over reference columns [x0, x1) (one
+// match region): the window SAD of every candidate (borders replicated, as the engine pads), the
+// paths from the left and from the right (Hirschmuller 2008, eq. 13, restarting at the region's
+// ends), and their sum; then the lowest sum, its smallest disparity and the runner-up.
+// `totals`, if given, receives the aggregated score of every column and candidate.
+std::vector<BruteForce> bruteForceScanline(const std::vector<cv::Mat1b>& images, const std::vector<SecondaryCamera>& cameras,
+                                           const StereoOptions& options, int y, int x0, int x1,
+                                           std::vector<std::vector<long long>>* totals = nullptr) {
+  const int r = options.window / 2, candidates = options.disparityCount();
+  const auto pixel = [](const cv::Mat1b& image, int px, int py) {
+    return static_cast<int>(image(std::clamp(py, 0, image.rows - 1), std::clamp(px, 0, image.cols - 1)));
+  };
+  const int columns = x1 - x0;
+  std::vector<std::vector<long long>> cost(columns, std::vector<long long>(candidates, 0));
+  for (int i = 0; i < columns; ++i) {
+    for (int j = 0; j < candidates; ++j) {
+      const int d = options.min_disparity + j;
+      for (size_t c = 0; c < cameras.size(); ++c) {
+        for (int dy = -r; dy <= r; ++dy) {
+          for (int dx = -r; dx <= r; ++dx) {
+            const int x = x0 + i + dx, yy = y + dy;
+            cost[i][j] += std::abs(pixel(images[0], x, yy) - pixel(images[c + 1], x - static_cast<int>(cameras[c].bx) * d,
+                                                                   yy - static_cast<int>(cameras[c].by) * d));
+          }
+        }
+      }
+    }
+  }
+  const long long scale = static_cast<long long>(options.window) * options.window * static_cast<long long>(cameras.size());
+  const long long p1 = std::llround(options.scanline_p1 * scale), p2 = std::llround(options.scanline_p2 * scale);
+  const auto path = [&](int direction) {
+    std::vector<std::vector<long long>> result(columns);
+    for (int step = 0; step < columns; ++step) {
+      const int i = direction > 0 ? step : columns - 1 - step;
+      if (step == 0) {
+        result[i] = cost[i];
+        continue;
+      }
+      const std::vector<long long>& previous = result[i - direction];
+      const long long lowest = *std::min_element(previous.begin(), previous.end());
+      result[i].resize(candidates);
+      for (int j = 0; j < candidates; ++j) {
+        long long reach = std::min(previous[j], lowest + p2);
+        if (j > 0) reach = std::min(reach, previous[j - 1] + p1);
+        if (j + 1 < candidates) reach = std::min(reach, previous[j + 1] + p1);
+        result[i][j] = cost[i][j] + reach - lowest;
+      }
+    }
+    return result;
+  };
+  const auto from_left = path(1), from_right = path(-1);
+  std::vector<BruteForce> results;
+  for (int i = 0; i < columns; ++i) {
+    BruteForce result{std::numeric_limits<int>::max(), 0, -1, std::numeric_limits<int>::max()};
+    std::vector<long long> total(candidates);
+    for (int j = 0; j < candidates; ++j) {
+      total[j] = from_left[i][j] + from_right[i][j];
+      result.score_sum += static_cast<int>(total[j]);
+      if (total[j] < result.best_score) {
+        result.best_score = static_cast<int>(total[j]);
+        result.best_disparity = options.min_disparity + j;
+      }
+    }
+    for (int j = 0; j < candidates; ++j) {
+      if (std::abs(options.min_disparity + j - result.best_disparity) > 1) {
+        result.second_score = std::min(result.second_score, static_cast<int>(total[j]));
+      }
+    }
+    results.push_back(result);
+    if (totals) totals->push_back(total);
+  }
+  return results;
+}
+
+void expectScanlineMatchesBruteForce(const std::vector<SecondaryCamera>& cameras, StereoOptions options, int x0,
+                                     int x1) {
+  std::vector<cv::Mat1b> images;
+  const StereoFrame frame = noiseFrame(cameras, cv::Size(70, 30), 23, images);
+  options.prefilter = Prefilter::kNone;  // compare raw grey levels
+  options.aggregation = CostAggregation::kScanline;
+  options.second_best_ratio = 0.9;      // so that the runner-up is found
+  options.uniqueness_threshold = 0.5;   // and the sum of scores
+  // One camera on the row: the left-right check reads the reverse match from the aggregated scores.
+  options.left_right_check = cameras.size() == 1;
+  const SadMatch match = SadMatcher(options).match(frame);
+  for (const int y : {0, 14, 29}) {
+    std::vector<std::vector<long long>> totals;
+    const std::vector<BruteForce> expected = bruteForceScanline(images, cameras, options, y, x0, x1, &totals);
+    for (int x = x0; x < x1; ++x) {
+      const BruteForce& pixel = expected[x - x0];
+      ASSERT_EQ(match.best_score(y, x), pixel.best_score) << "(" << x << ", " << y << ")";
+      ASSERT_EQ(match.disparity(y, x), pixel.best_disparity) << "(" << x << ", " << y << ")";
+      ASSERT_EQ(match.second_score(y, x), pixel.second_score) << "(" << x << ", " << y << ")";
+      ASSERT_EQ(match.score_sum(y, x), pixel.score_sum) << "(" << x << ", " << y << ")";
+    }
+    if (!options.left_right_check) continue;
+    // Secondary pixel s is reached by candidate d of reference pixel s + bx * d: the lowest such
+    // aggregated score, the smallest disparity on ties.
+    const int bx = static_cast<int>(cameras[0].bx);
+    int compared = 0;
+    for (int s = 0; s < images[1].cols; ++s) {
+      long long lowest = std::numeric_limits<long long>::max();
+      float disparity = kInvalidDisparity;
+      for (int d = options.min_disparity; d <= options.max_disparity; ++d) {
+        const int x = s + bx * d;
+        if (x < x0 || x >= x1) continue;
+        const long long total = totals[x - x0][d - options.min_disparity];
+        if (total < lowest) {
+          lowest = total;
+          disparity = static_cast<float>(d);
+        }
+      }
+      ASSERT_EQ(match.reverse_disparity(y, s), disparity) << "(" << s << ", " << y << ")";
+      compared += disparity != kInvalidDisparity;
+    }
+    EXPECT_GT(compared, 40);
+  }
+}
+
+TEST(SadMatcherTest, ScanlineEqualsThePathsComputedTheSlowWay) {
+  StereoOptions options = matchOptions();
+  options.window = 3;
+  options.max_disparity = 12;  // 13 candidates: the last vector is partly padding
+  options.scanline_p1 = 2;
+  options.scanline_p2 = 9;     // small enough for 16-bit scores
+  expectScanlineMatchesBruteForce({{1, 0}}, options, 12, 70);
+  expectScanlineMatchesBruteForce({{-1, 0}}, options, 0, 58);
+}
+
+TEST(SadMatcherTest, ScanlineEqualsTheSlowWayWithWideScoresAndSeveralCameras) {
+  StereoOptions options = matchOptions();
+  options.min_disparity = 2;
+  options.max_disparity = 20;  // 19 candidates
+  options.window = 7;          // 2 * (49 * 255 * 2 + 32 * 49 * 2) > 32767: 32-bit scores
+  // Columns where both cameras see every candidate: one region, its paths restart at its ends.
+  expectScanlineMatchesBruteForce({{1, 0}, {-1, 0}}, options, 20, 50);
+}
+
+// A flat band is ambiguous for a window inside it (every candidate that keeps the window in the
+// band scores 0, and the first, disparity 0, wins); the scanline carries the textured surface's
+// disparity across it from both sides.
+TEST(SadMatcherTest, ScanlineCarriesTheDisparityAcrossAFlatBand) {
+  constexpr int kShift = 6;
+  cv::RNG rng(3);
+  cv::Mat1b reference(40, 140);
+  rng.fill(reference, cv::RNG::UNIFORM, 0, 256);
+  reference.colRange(55, 85).setTo(128);
+  cv::Mat1b secondary(40, 140, uchar{0});
+  reference.colRange(kShift, 140).copyTo(secondary.colRange(0, 140 - kShift));
+  StereoOptions options = matchOptions();
+  options.window = 5;
+  options.left_right_check = false;
+  const StereoFrame frame{reference, {{secondary, {1, 0}}}};
+  const SadMatch window_only = SadMatcher(options).match(frame);
+  options.aggregation = CostAggregation::kScanline;
+  const SadMatch scanline = SadMatcher(options).match(frame);
+  int window_correct = 0, scanline_correct = 0;
+  for (int y = 5; y < 35; ++y) {
+    for (int x = 62; x < 78; ++x) {  // windows inside the band
+      window_correct += window_only.disparity(y, x) == kShift;
+      scanline_correct += scanline.disparity(y, x) == kShift;
+    }
+  }
+  EXPECT_EQ(window_correct, 0);
+  EXPECT_EQ(scanline_correct, 30 * 16);
 }
 
 TEST(SadMatcherTest, ThreadsGiveTheSameResult) {
