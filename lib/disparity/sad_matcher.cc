@@ -516,9 +516,9 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
   const int scale = window * window * (groups == 1 ? cameras : kept);
   const Vec small_jump = Lanes::all(static_cast<int>(std::lround(frame.scanline_p1 * scale)));
   const Vec large_jump = Lanes::all(static_cast<int>(std::lround(frame.scanline_p2 * scale)));
-  // Padding lanes of a path hold the largest score, so that no real candidate is reached through them.
-  // All ones in the lanes of real candidates: padding lanes of paths may wrap to negative values,
-  // which the OR / AND with `padding` alone would not clear.
+  // Padding lanes of a path hold the largest score, so that no real candidate is reached through
+  // them. Their sums may wrap to negative values, which the OR with `padding` alone would keep
+  // negative: `real_lanes` (all ones in the lanes of real candidates) clears them first.
   Vec real_lanes[kVectorsPerBytes];
   for (int k = 0; k < chunk_count - unpadded_chunks; ++k) real_lanes[k] = padding[k] == Lanes::all(0);
   const auto padded_lanes = [&](const Vec& value, int chunk) {
