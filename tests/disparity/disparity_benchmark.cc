@@ -12,7 +12,6 @@
 // Compare medians; the argument is the width (320, 640 or 1280):
 //   bench_disparity --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
-#include <mrpt/config/CConfigFile.h>
 #include <opencv2/calib3d.hpp>
 #include <opencv2/core/utility.hpp>
 #include <opencv2/imgcodecs.hpp>
@@ -22,6 +21,7 @@
 #include <string>
 
 #include "disparity/disparity_engine.h"
+#include "shipped_config.h"
 
 namespace stereonav {
 namespace {
@@ -56,9 +56,7 @@ StereoOptions paperOptions(int width) {
 }
 
 StereoOptions improvedOptions(int width) {
-  const mrpt::config::CConfigFile config(std::string(STEREONAV_SOURCE_DIR) + "/ini/stereo_real_images.ini");
-  IniSection section(config, "stereo");
-  StereoOptions options = loadStereoOptions(section);
+  StereoOptions options = testing::shippedStereoOptions("stereo_real_images.ini");
   options.min_disparity = 0;
   options.max_disparity = disparities(width) - 1;
   return options;
