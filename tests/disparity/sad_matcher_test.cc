@@ -112,6 +112,25 @@ TEST(SadMatcherTest, SubpixelRefinementRecoversFractionalDisparity) {
   EXPECT_LT(refined_error / pixels, 0.2);
 }
 
+// The plain SAD of camera c over the window at reference pixel (x, y) and disparity d; pixels off
+// the image repeat the nearest border pixel, as the engine pads its images.
+int windowSad(const std::vector<cv::Mat1b>& images, const std::vector<SecondaryCamera>& cameras, size_t c, int window,
+              int x, int y, int d) {
+  const auto pixel = [](const cv::Mat1b& image, int px, int py) {
+    return static_cast<int>(image(std::clamp(py, 0, image.rows - 1), std::clamp(px, 0, image.cols - 1)));
+  };
+  const int r = window / 2;
+  int sad = 0;
+  for (int dy = -r; dy <= r; ++dy) {
+    for (int dx = -r; dx <= r; ++dx) {
+      const int sx = x + dx - static_cast<int>(cameras[c].bx) * d;
+      const int sy = y + dy - static_cast<int>(cameras[c].by) * d;
+      sad += std::abs(pixel(images[0], x + dx, y + dy) - pixel(images[c + 1], sx, sy));
+    }
+  }
+  return sad;
+}
+
 // Window scores computed the slow way: per candidate, per camera, the plain SAD of the prefiltered
 // images over the window, combined by sum or by the ceil(N/2) lowest.
 struct BruteForce {
@@ -123,21 +142,12 @@ struct BruteForce {
 
 BruteForce bruteForce(const std::vector<cv::Mat1b>& images, const std::vector<SecondaryCamera>& cameras,
                       const StereoOptions& options, int x, int y, bool best_half) {
-  const int r = options.window / 2;
   BruteForce result{1 << 30, 0, -1, std::numeric_limits<int>::max()};
   std::vector<int> scores;
   for (int d = options.min_disparity; d <= options.max_disparity; ++d) {
     std::vector<int> per_camera;
     for (size_t c = 0; c < cameras.size(); ++c) {
-      int sad = 0;
-      for (int dy = -r; dy <= r; ++dy) {
-        for (int dx = -r; dx <= r; ++dx) {
-          const int sx = x + dx - static_cast<int>(cameras[c].bx) * d;
-          const int sy = y + dy - static_cast<int>(cameras[c].by) * d;
-          sad += std::abs(images[0](y + dy, x + dx) - images[c + 1](sy, sx));
-        }
-      }
-      per_camera.push_back(sad);
+      per_camera.push_back(windowSad(images, cameras, c, options.window, x, y, d));
     }
     std::sort(per_camera.begin(), per_camera.end());
     const size_t kept = best_half ? (per_camera.size() + 1) / 2 : per_camera.size();
@@ -322,23 +332,13 @@ TEST(SadMatcherTest, CalibrationRoundingOffAUnitBaselineMatchesTheUnitBaseline) 
 std::vector<BruteForce> bruteForceScanline(const std::vector<cv::Mat1b>& images, const std::vector<SecondaryCamera>& cameras,
                                            const StereoOptions& options, int y, int x0, int x1,
                                            std::vector<std::vector<long long>>* totals = nullptr) {
-  const int r = options.window / 2, candidates = options.disparityCount();
-  const auto pixel = [](const cv::Mat1b& image, int px, int py) {
-    return static_cast<int>(image(std::clamp(py, 0, image.rows - 1), std::clamp(px, 0, image.cols - 1)));
-  };
+  const int candidates = options.disparityCount();
   const int columns = x1 - x0;
   std::vector<std::vector<long long>> cost(columns, std::vector<long long>(candidates, 0));
   for (int i = 0; i < columns; ++i) {
     for (int j = 0; j < candidates; ++j) {
-      const int d = options.min_disparity + j;
       for (size_t c = 0; c < cameras.size(); ++c) {
-        for (int dy = -r; dy <= r; ++dy) {
-          for (int dx = -r; dx <= r; ++dx) {
-            const int x = x0 + i + dx, yy = y + dy;
-            cost[i][j] += std::abs(pixel(images[0], x, yy) - pixel(images[c + 1], x - static_cast<int>(cameras[c].bx) * d,
-                                                                   yy - static_cast<int>(cameras[c].by) * d));
-          }
-        }
+        cost[i][j] += windowSad(images, cameras, c, options.window, x0 + i, y, options.min_disparity + j);
       }
     }
   }
