@@ -1,5 +1,7 @@
 #include "disparity/stereo_options.h"
 
+#include <opencv2/core/utility.hpp>
+
 #include <map>
 
 namespace stereonav {
@@ -23,6 +25,8 @@ const std::map<std::string, CameraCombination> kCombinationNames{
     {"sum", CameraCombination::kSum}, {"best_half", CameraCombination::kBestHalf}};
 const std::map<std::string, CostAggregation> kAggregationNames{
     {"window", CostAggregation::kWindow}, {"scanline", CostAggregation::kScanline}};
+const std::map<std::string, SimdLevel> kSimdNames{
+    {"auto", SimdLevel::kAuto}, {"sse2", SimdLevel::kSse2}, {"avx2", SimdLevel::kAvx2}};
 
 template <typename Enum>
 std::string nameOf(Enum value, const std::map<std::string, Enum>& names) {
@@ -45,6 +49,20 @@ const char* toString(StereoBackend backend) {
     case StereoBackend::kOpenCvSgbm: return "sgbm";
   }
   return "";
+}
+
+const char* toString(SimdLevel level) {
+  switch (level) {
+    case SimdLevel::kAuto: return "auto";
+    case SimdLevel::kSse2: return "sse2";
+    case SimdLevel::kAvx2: return "avx2";
+  }
+  return "";
+}
+
+bool simdSupported(SimdLevel level) {
+  // SSE2 is part of x86-64, which is all the engine is built for.
+  return level != SimdLevel::kAvx2 || cv::checkHardwareSupport(CV_CPU_AVX2);
 }
 
 StereoOptions loadStereoOptions(IniSection& section) {
@@ -74,6 +92,7 @@ StereoOptions loadStereoOptions(IniSection& section) {
   options.left_right_max_diff = section.getDouble("left_right_max_diff", options.left_right_max_diff);
   options.subpixel = section.getBool("subpixel", options.subpixel);
   options.threads = section.getInt("threads", options.threads);
+  options.simd = parseEnum(section.getString("simd", toString(options.simd)), kSimdNames, prefix + "simd");
   options.opencv_texture_threshold =
       section.getInt("opencv_texture_threshold", options.opencv_texture_threshold);
   options.opencv_uniqueness_ratio = section.getInt("opencv_uniqueness_ratio", options.opencv_uniqueness_ratio);
@@ -114,6 +133,7 @@ void validateStereoOptions(const StereoOptions& options, const std::string& sect
   }
   if (!(options.left_right_max_diff >= 0)) fail("left_right_max_diff", "must be >= 0");
   if (options.threads < 1 || options.threads > 256) fail("threads", "must be in 1..256");
+  if (!simdSupported(options.simd)) fail("simd", std::string(toString(options.simd)) + " is not supported by this CPU");
   if (options.opencv_texture_threshold < 0) fail("opencv_texture_threshold", "must be >= 0");
   if (options.opencv_uniqueness_ratio < 0) fail("opencv_uniqueness_ratio", "must be >= 0");
   if (options.opencv_speckle_window < 0) fail("opencv_speckle_window", "must be >= 0");

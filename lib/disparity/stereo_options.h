@@ -31,6 +31,14 @@ enum class CameraCombination { kSum, kBestHalf };
 // background to the foreground's disparity.
 enum class CostAggregation { kWindow, kScanline };
 
+// The instruction set of the SAD engine's vector loop. kAuto takes the widest this CPU runs
+// (AVX2's 256-bit vectors compare twice the candidates per instruction of SSE2's 128-bit ones);
+// the others force one, for comparison. Every level gives the same disparities and scores.
+enum class SimdLevel { kAuto, kSse2, kAvx2 };
+
+// Whether this CPU (and OpenCV's view of it, which OPENCV_CPU_DISABLE can restrict) runs `level`.
+bool simdSupported(SimdLevel level);
+
 // Everything that controls the stereo engine; loaded from the [stereo] ini section.
 struct StereoOptions {
   StereoBackend backend = StereoBackend::kSad;
@@ -69,6 +77,7 @@ struct StereoOptions {
   bool subpixel = false;  // parabola through the best score and its neighbours (section 3.2: off)
 
   int threads = 1;  // horizontal stripes matched in parallel (cv::parallel_for_)
+  SimdLevel simd = SimdLevel::kAuto;
 
   // Only for the OpenCV backends (their own validation, in their own units).
   int opencv_texture_threshold = 10;  // cv::StereoBM::setTextureThreshold
@@ -81,7 +90,7 @@ struct StereoOptions {
 
 // Loads and validates the [stereo] section; throws ConfigError "[stereo] key: why". Keys are the
 // member names above; enums as text: backend = sad | bm | sgbm, prefilter = none | xsobel | log,
-// combination = sum | best_half, aggregation = window | scanline.
+// combination = sum | best_half, aggregation = window | scanline, simd = auto | sse2 | avx2.
 StereoOptions loadStereoOptions(IniSection& section);
 
 // Bounds on the disparity range and the SAD window, pixels.
@@ -94,5 +103,6 @@ void validateStereoOptions(const StereoOptions& options, const std::string& sect
 // The text form of the enums, as written in ini files.
 StereoBackend parseStereoBackend(const std::string& text, const std::string& what);
 const char* toString(StereoBackend backend);
+const char* toString(SimdLevel level);
 
 }  // namespace stereonav

@@ -7,6 +7,7 @@
 //                   docs/stereo.md: 5x5, scanline aggregation, distinctiveness test, left-right
 //                   check from the same scores), with the range set per size
 //   - OurTrinocular: the paper's path with the L-shaped Triclops head (left and top cameras)
+//   - ...Sse2:      the same with the 128-bit loop forced (the others take AVX2 where the CPU has it)
 //   - OpenCvStereoBm: its defaults at 9x9 (x-Sobel, texture 10, uniqueness 15), no speckle filter
 //   - OpenCvStereoSgbm: 3x3 blocks, MODE_SGBM
 // Compare medians; the argument is the width (320, 640 or 1280):
@@ -86,6 +87,20 @@ void BM_OurImproved(benchmark::State& state) {
   runOurs(state, binocular(width), improvedOptions(width), 1);
 }
 
+void BM_OurPaperSse2(benchmark::State& state) {
+  const int width = static_cast<int>(state.range(0));
+  StereoOptions options = paperOptions(width);
+  options.simd = SimdLevel::kSse2;
+  runOurs(state, binocular(width), options, 1);
+}
+
+void BM_OurImprovedSse2(benchmark::State& state) {
+  const int width = static_cast<int>(state.range(0));
+  StereoOptions options = improvedOptions(width);
+  options.simd = SimdLevel::kSse2;
+  runOurs(state, binocular(width), options, 1);
+}
+
 void BM_OurImprovedThreads(benchmark::State& state) {
   const int width = static_cast<int>(state.range(0));
   runOurs(state, binocular(width), improvedOptions(width), cv::getNumberOfCPUs());
@@ -125,6 +140,8 @@ void BM_OpenCvStereoSgbm(benchmark::State& state) {
 BENCHMARK(BM_OpenCvStereoBm) STEREO_SIZES;
 BENCHMARK(BM_OurPaper) STEREO_SIZES;
 BENCHMARK(BM_OurImproved) STEREO_SIZES;
+BENCHMARK(BM_OurPaperSse2) STEREO_SIZES;
+BENCHMARK(BM_OurImprovedSse2) STEREO_SIZES;
 BENCHMARK(BM_OurTrinocular) STEREO_SIZES;
 BENCHMARK(BM_OpenCvStereoSgbm) STEREO_SIZES;
 BENCHMARK(BM_OpenCvStereoBmThreads) STEREO_SIZES->UseRealTime();

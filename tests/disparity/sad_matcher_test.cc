@@ -481,6 +481,61 @@ TEST(SadMatcherTest, ScanlineCarriesTheDisparityAcrossAFlatBand) {
   EXPECT_EQ(scanline_correct, 30 * 16);
 }
 
+// Every output of two matches, pixel for pixel (invalid disparities compared as equal).
+void expectSameMatch(const SadMatch& a, const SadMatch& b) {
+  const auto same = [](const cv::Mat& x, const cv::Mat& y) {
+    if (x.empty() || y.empty()) return x.empty() && y.empty();
+    cv::Mat x_valid = x.clone(), y_valid = y.clone();
+    if (x.depth() == CV_32F) {
+      x_valid.setTo(-1, x == kInvalidDisparity);
+      y_valid.setTo(-1, y == kInvalidDisparity);
+    }
+    return cv::norm(x_valid, y_valid, cv::NORM_INF) == 0.0;
+  };
+  EXPECT_TRUE(same(a.disparity, b.disparity));
+  EXPECT_TRUE(same(a.best_score, b.best_score));
+  EXPECT_TRUE(same(a.score_sum, b.score_sum));
+  EXPECT_TRUE(same(a.second_score, b.second_score));
+  EXPECT_TRUE(same(a.reverse_disparity, b.reverse_disparity));
+}
+
+// The AVX2 loop compares twice the candidates per instruction and pads the disparities to 32
+// instead of 16; it must give what the SSE2 loop gives along every path through the loop.
+TEST(SadMatcherTest, Avx2GivesTheSameMatchAsSse2) {
+  if (!simdSupported(SimdLevel::kAvx2)) GTEST_SKIP() << "this CPU has no AVX2";
+  struct Case {
+    const char* name;
+    std::vector<SecondaryCamera> cameras;
+    void (*configure)(StereoOptions&);
+  };
+  const std::vector<Case> cases{
+      {"binocular, 13 candidates, every test", {{1, 0}},
+       [](StereoOptions& o) { o.max_disparity = 12, o.second_best_ratio = 0.9, o.subpixel = true; }},
+      {"left camera, 41 candidates, scanline", {{-1, 0}},
+       [](StereoOptions& o) { o.max_disparity = 40, o.aggregation = CostAggregation::kScanline; }},
+      {"trinocular, 64 candidates", {{-1, 0}, {0, -1}}, [](StereoOptions& o) { o.max_disparity = 63; }},
+      {"diagonal cameras, best half", {{1, 1}, {-1, 1}, {1, -1}, {-1, -1}},
+       [](StereoOptions& o) { o.combination = CameraCombination::kBestHalf; }},
+      {"wide scores, scanline", {{1, 0}, {0, 1}},
+       [](StereoOptions& o) { o.window = 15, o.max_disparity = 10, o.aggregation = CostAggregation::kScanline; }},
+      {"interpolated half baseline", {{0.5, 0}, {0, 0.5}}, [](StereoOptions& o) { o.max_disparity = 20; }},
+      {"minimum disparity, threads", {{1, 0}},
+       [](StereoOptions& o) { o.min_disparity = 5, o.max_disparity = 36, o.threads = 3; }},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.name);
+    std::vector<cv::Mat1b> images;
+    const StereoFrame frame = noiseFrame(c.cameras, cv::Size(97, 61), 23, images);
+    StereoOptions options = matchOptions();
+    c.configure(options);
+    options.simd = SimdLevel::kSse2;
+    SadMatcher sse2(options);
+    options.simd = SimdLevel::kAvx2;
+    SadMatcher avx2(options);
+    expectSameMatch(sse2.match(frame), avx2.match(frame));
+  }
+}
+
 TEST(SadMatcherTest, ThreadsGiveTheSameResult) {
   SyntheticScene scene(kSize, 4.0, 17);
   scene.addPlane(kPlane, 10.0);

@@ -21,7 +21,7 @@ TEST(StereoOptionsTest, LoadsEveryKey) {
   const StereoOptions options = load(
       "backend = sgbm\nmin_disparity = 2\nmax_disparity = 47\nwindow = 9\nprefilter = log\nprefilter_cap = 20\n"
       "combination = best_half\naggregation = scanline\nscanline_p1 = 3\nscanline_p2 = 40\ntexture_threshold = 1.5\ntexture_sigma = 2\nuniqueness_threshold = 0.03\n"
-      "second_best_ratio = 0.85\nleft_right_check = false\nleft_right_max_diff = 2\nsubpixel = true\nthreads = 4\n"
+      "second_best_ratio = 0.85\nleft_right_check = false\nleft_right_max_diff = 2\nsubpixel = true\nthreads = 4\nsimd = sse2\n"
       "opencv_texture_threshold = 5\nopencv_uniqueness_ratio = 10\nopencv_speckle_window = 100\n"
       "opencv_speckle_range = 2\n");
   EXPECT_EQ(options.backend, StereoBackend::kOpenCvSgbm);
@@ -43,6 +43,7 @@ TEST(StereoOptionsTest, LoadsEveryKey) {
   EXPECT_DOUBLE_EQ(options.left_right_max_diff, 2.0);
   EXPECT_TRUE(options.subpixel);
   EXPECT_EQ(options.threads, 4);
+  EXPECT_EQ(options.simd, SimdLevel::kSse2);
   EXPECT_EQ(options.opencv_texture_threshold, 5);
   EXPECT_EQ(options.opencv_uniqueness_ratio, 10);
   EXPECT_EQ(options.opencv_speckle_window, 100);
@@ -58,6 +59,7 @@ TEST(StereoOptionsTest, EmptySectionGivesTheDefaults) {
   EXPECT_FALSE(options.subpixel);  // paper section 3.2
   EXPECT_DOUBLE_EQ(options.second_best_ratio, 1.0);  // the paper's quality-of-match test only
   EXPECT_EQ(options.aggregation, CostAggregation::kWindow);  // the paper's window SAD alone
+  EXPECT_EQ(options.simd, SimdLevel::kAuto);
 }
 
 TEST(StereoOptionsTest, UnknownKeyIsNamedWithTheNearestKnownOne) {
@@ -81,6 +83,7 @@ TEST(StereoOptionsTest, BadValuesNameTheKey) {
   EXPECT_NE(errorOf("scanline_p1 = -1\n").find("[stereo] scanline_p1"), std::string::npos);
   EXPECT_NE(errorOf("scanline_p1 = 10\nscanline_p2 = 5\n").find("[stereo] scanline_p2"), std::string::npos);
   EXPECT_NE(errorOf("scanline_p2 = 300\n").find("[stereo] scanline_p2"), std::string::npos);
+  EXPECT_NE(errorOf("simd = avx512\n").find("[stereo] simd: expected auto | avx2 | sse2"), std::string::npos);
 }
 
 TEST(StereoOptionsTest, ShippedConfigurationsLoad) {

@@ -1,0 +1,86 @@
+#pragma once
+
+// The matching loop of SadMatcher, built once per instruction set (sad_kernel_sse2.cc,
+// sad_kernel_avx2.cc from sad_kernel_loop.h), and the frame data it reads. Internal to the
+// disparity stage.
+
+#include <opencv2/core.hpp>
+
+#include <cstddef>
+#include <vector>
+
+#include "disparity/sad_matcher.h"
+#include "disparity/stereo_options.h"
+
+namespace stereonav {
+
+constexpr size_t kMaxCameras = 16;
+
+// Weights of one bilinear sample of a tabulated camera; they add up to 1 << 16.
+struct BilinearTap {
+  int dx = 0, dy = 0;  // integer part of the sample's offset from the reference pixel
+  int w00 = 0, w01 = 0, w10 = 0, w11 = 0;
+};
+
+// Where the candidates of a reference pixel are. Candidate j (disparity min + j) of pixel (x, y)
+// is the byte buffer.data + origin + x*x_step + y*y_step + j for cameras that move one whole pixel
+// per disparity along an image axis or a diagonal: their image is flipped, transposed or sheared
+// once per frame so that increasing disparity runs forward in memory. Other cameras (fractional
+// or longer baselines) are interpolated into a per-row table; for them origin/x_step/y_step
+// address pixel (x, y) itself.
+struct CandidateSource {
+  cv::Mat1b filtered, flipped, padded;  // the prefiltered image, flipped, padded by the margin
+  cv::Mat1b buffer;  // `padded`, or its transpose or shear for vertical and diagonal cameras
+  ptrdiff_t origin = 0;
+  ptrdiff_t x_step = 0;
+  ptrdiff_t y_step = 0;
+  std::vector<BilinearTap> taps;  // one per candidate; empty for direct sources
+  int step_x = 0, step_y = 0;     // direct sources: the whole-pixel step per disparity
+
+  bool tabulated() const { return !taps.empty(); }
+};
+
+struct PreparedFrame {
+  cv::Mat1b filtered_reference;
+  cv::Mat1b reference;  // prefiltered, padded by margin
+  std::vector<CandidateSource> sources;
+  int margin = 0;
+  int radius = 0;
+  int min_disparity = 0;
+  int disparities = 0;         // D
+  int padded_disparities = 0;  // D rounded up to whole byte vectors
+  bool best_half = false;
+  bool subpixel = false;
+  bool second_best = false;  // find the runner-up score (SadMatch::second_score)
+  bool sum_scores = true;    // add up all candidates' scores (SadMatch::score_sum)
+  bool scanline = false;     // CostAggregation::kScanline, with its jump costs per window pixel and camera
+  double scanline_p1 = 0, scanline_p2 = 0;
+  // Binocular horizontal rig with the left-right check: +1 if candidate d of pixel x is pixel
+  // x - d of the secondary image, -1 if x + d; 0 = no reverse match (SadMatch::reverse_disparity).
+  int reverse_sign = 0;
+};
+
+// A rectangle of reference pixels whose candidates, at every disparity, are inside the images of
+// exactly `cameras`.
+struct MatchRegion {
+  int x0 = 0, x1 = 0, y0 = 0, y1 = 0;
+  std::vector<int> cameras;
+};
+
+// One instruction set's build of the loop: it matches the reference pixels of a region, with
+// 16-bit scores (when the largest possible score fits) or 32-bit ones. Candidate disparities are
+// padded to a multiple of byte_lanes, the candidates of one 8-bit vector.
+struct SadKernel {
+  SimdLevel level;
+  int byte_lanes;
+  void (*match_narrow)(const PreparedFrame& frame, const MatchRegion& region, SadMatch& out);
+  void (*match_wide)(const PreparedFrame& frame, const MatchRegion& region, SadMatch& out);
+};
+
+const SadKernel& sse2SadKernel();
+const SadKernel& avx2SadKernel();  // call only where the CPU has AVX2 (simdSupported)
+
+// The kernel of `level`; kAuto is the widest the CPU runs. Throws ConfigError if the CPU lacks it.
+const SadKernel& sadKernel(SimdLevel level);
+
+}  // namespace stereonav

@@ -1,0 +1,472 @@
+// The matching loop of SadMatcher (see sad_matcher.cc for the method), written once with OpenCV's
+// universal intrinsics at the widest vector width of the including translation unit. Each of
+// sad_kernel_sse2.cc and sad_kernel_avx2.cc includes opencv2/core/hal/intrin.hpp configured for
+// its instruction set, defines STEREONAV_SAD_KERNEL_NAMESPACE (the code of each build must have
+// names of its own) and then includes this file.
+
+#include <opencv2/core.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <type_traits>
+#include <vector>
+
+#include "disparity/disparity_image.h"
+#include "disparity/sad_kernel.h"
+
+#ifndef STEREONAV_SAD_KERNEL_NAMESPACE
+#error "define STEREONAV_SAD_KERNEL_NAMESPACE before including sad_kernel_loop.h"
+#endif
+
+namespace stereonav {
+namespace STEREONAV_SAD_KERNEL_NAMESPACE {
+
+constexpr int kByteLanes = cv::v_uint8::nlanes;  // candidates compared per 8-bit vector
+
+// The vector type that accumulates scores: 16-bit when the largest possible window score fits in
+// an int16 (SSE2 and AVX2 compare and take minima of signed 16-bit lanes natively), 32-bit
+// otherwise. Vectors are the widest the translation unit was built for (cv::v_int16 is 8 lanes
+// with SSE2, 16 with AVX2).
+template <typename Acc>
+struct AccumulatorLanes;
+
+template <>
+struct AccumulatorLanes<int16_t> {
+  using Vec = cv::v_int16;
+  static constexpr int kCount = Vec::nlanes;
+  static void widen(const cv::v_uint8& bytes, Vec* out) {
+    cv::v_uint16 low, high;
+    cv::v_expand(bytes, low, high);
+    out[0] = cv::v_reinterpret_as_s16(low);
+    out[1] = cv::v_reinterpret_as_s16(high);
+  }
+  // OpenCV's 16-bit + and - saturate; running sums need modular arithmetic, which is exact as
+  // long as the true result fits.
+  static Vec add(const Vec& a, const Vec& b) { return cv::v_add_wrap(a, b); }
+  static Vec subtract(const Vec& a, const Vec& b) { return cv::v_sub_wrap(a, b); }
+  static Vec slide(const Vec& sum, const Vec& entering, const Vec& leaving) {
+    return cv::v_sub_wrap(cv::v_add_wrap(sum, entering), leaving);
+  }
+  // Pairwise 32-bit sums of the lanes (one multiply-add instruction).
+  static cv::v_int32 widenSum(const Vec& v) { return cv::v_dotprod(v, cv::vx_setall_s16(1)); }
+  static Vec all(int value) { return cv::vx_setall_s16(static_cast<short>(value)); }
+  // Sign bits of a's lanes then b's (lanes of comparison masks are 0 or -1).
+  static unsigned packedSignMask(const Vec& a, const Vec& b) {
+    return static_cast<unsigned>(cv::v_signmask(cv::v_pack(a, b)));
+  }
+};
+
+template <>
+struct AccumulatorLanes<int32_t> {
+  using Vec = cv::v_int32;
+  static constexpr int kCount = Vec::nlanes;
+  static void widen(const cv::v_uint8& bytes, Vec* out) {
+    cv::v_uint16 low, high;
+    cv::v_expand(bytes, low, high);
+    cv::v_uint32 parts[4];
+    cv::v_expand(low, parts[0], parts[1]);
+    cv::v_expand(high, parts[2], parts[3]);
+    for (int i = 0; i < 4; ++i) out[i] = cv::v_reinterpret_as_s32(parts[i]);
+  }
+  static Vec add(const Vec& a, const Vec& b) { return a + b; }
+  static Vec subtract(const Vec& a, const Vec& b) { return a - b; }
+  static Vec slide(const Vec& sum, const Vec& entering, const Vec& leaving) { return sum + entering - leaving; }
+  static cv::v_int32 widenSum(const Vec& v) { return v; }
+  static Vec all(int value) { return cv::vx_setall_s32(value); }
+  static unsigned packedSignMask(const Vec& a, const Vec& b) {
+    return static_cast<unsigned>(cv::v_signmask(cv::v_pack(a, b)));
+  }
+};
+
+// Grows `buffer` if needed (buffers are reused from call to call: frames of one size need no new
+// memory) and returns `size` elements of it that start on a cache line: the loop reads and writes
+// whole vectors at whole-vector offsets, and a 32-byte vector on a 16-byte boundary (all that
+// std::vector promises) straddles two lines every other time, which costs AVX2 more than it saves.
+template <typename T>
+T* scratch(std::vector<T>& buffer, size_t size) {
+  constexpr size_t kLine = 64;
+  constexpr size_t kSlack = kLine / sizeof(T);
+  if (buffer.size() < size + kSlack) buffer.resize(size + kSlack);
+  void* start = buffer.data();
+  size_t space = buffer.size() * sizeof(T);
+  return static_cast<T*>(std::align(kLine, size * sizeof(T), start, space));
+}
+
+// Index of the first of the `chunks` * kCount scores equal to `wanted` (one must be): the
+// comparison masks of 64 lanes at a time are packed into one bit mask, so there is no
+// data-dependent branch inside a block.
+template <typename Lanes, typename Acc>
+CV_ALWAYS_INLINE int firstLaneEqual(const Acc* scores, int chunks, const typename Lanes::Vec& wanted) {
+  constexpr int kChunksPerBlock = 64 / Lanes::kCount;
+  for (int block = 0; block < chunks; block += kChunksPerBlock) {
+    const int block_chunks = std::min(chunks - block, kChunksPerBlock);
+    uint64_t hits = 0;
+    for (int chunk = 0; chunk < block_chunks; chunk += 2) {
+      const Acc* first = scores + (block + chunk) * Lanes::kCount;
+      const typename Lanes::Vec a = cv::vx_load(first) == wanted;
+      const typename Lanes::Vec b = chunk + 1 < block_chunks ? cv::vx_load(first + Lanes::kCount) == wanted : Lanes::all(0);
+      hits |= static_cast<uint64_t>(Lanes::packedSignMask(a, b)) << (chunk * Lanes::kCount);
+    }
+    if (hits) return block * Lanes::kCount + __builtin_ctzll(hits);
+  }
+  return 0;
+}
+
+template <typename Acc>
+void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch& out) {
+  using Lanes = AccumulatorLanes<Acc>;
+  using Vec = typename Lanes::Vec;
+  constexpr int kVectorsPerBytes = kByteLanes / Lanes::kCount;
+  constexpr Acc kMaxScore = std::numeric_limits<Acc>::max();
+
+  const int r = frame.radius, window = 2 * r + 1, margin = frame.margin;
+  const int disparities = frame.disparities, padded = frame.padded_disparities;
+  const int x0 = region.x0, nx = region.x1 - region.x0 + 2 * r;
+  const size_t row_size = static_cast<size_t>(nx) * padded;
+  const int cameras = static_cast<int>(region.cameras.size());
+  // Sum mode: one group of all cameras. Best-half: each camera its own group, and the
+  // ceil(N/2) lowest group scores are added per candidate.
+  const int groups = frame.best_half && cameras > 1 ? cameras : 1;
+  const int kept = groups == 1 ? 1 : (cameras + 1) / 2;
+
+  thread_local std::vector<Acc> ring_buffer, column_sum_buffer, score_buffer, combined_buffer;
+  thread_local std::vector<uchar> table_buffer;
+  thread_local std::vector<Acc> reverse_score_buffer, reverse_index_buffer;
+  thread_local std::vector<Acc> row_cost_buffer, forward_path_buffer, backward_path_buffer;
+  Acc* const ring = scratch(ring_buffer, groups * window * row_size);
+  std::fill(ring, ring + groups * window * row_size, Acc{0});  // nothing leaves before the first rows
+  // Column xe of group g is at column_sums + g * column_stride + (xe + 1) * padded; column -1 stays
+  // zero, so the first pixel of a row slides its window in like every other one.
+  const size_t column_stride = row_size + padded;
+  Acc* const column_sums = scratch(column_sum_buffer, groups * column_stride);
+  std::fill(column_sums, column_sums + groups * column_stride, Acc{0});
+  Acc* const scores = scratch(score_buffer, static_cast<size_t>(groups) * padded);
+  Acc* const combined = scratch(combined_buffer, padded);
+  // Scanline: the scores of every pixel of a row, the paths from the left, and the last two of
+  // the path from the right. A path's candidates sit between guard lanes that hold the largest
+  // score, so that the neighbours of its first and last candidates are read without a test.
+  const size_t row_pixels = frame.scanline ? static_cast<size_t>(region.x1 - region.x0) : 0;
+  const size_t path_stride = static_cast<size_t>(padded) + 2 * Lanes::kCount;
+  Acc* const row_costs = scratch(row_cost_buffer, row_pixels * padded);
+  Acc* const forward_paths = scratch(forward_path_buffer, row_pixels * path_stride) + Lanes::kCount;
+  Acc* const backward_paths = scratch(backward_path_buffer, 2 * path_stride) + Lanes::kCount;
+  if (frame.scanline) {
+    std::fill(forward_paths - Lanes::kCount, forward_paths - Lanes::kCount + row_pixels * path_stride, kMaxScore);
+    std::fill(backward_paths - Lanes::kCount, backward_paths - Lanes::kCount + 2 * path_stride, kMaxScore);
+  }
+  uchar* const tables = scratch(table_buffer, cameras * row_size);
+
+  const int chunks = padded / Lanes::kCount;
+  const int whole_chunks = disparities / Lanes::kCount;  // chunks without padding lanes
+  // Only the chunks of the last byte vector can hold padding lanes: there, kMaxScore.
+  Vec padding[kVectorsPerBytes];
+  Acc first_lanes[Lanes::kCount];
+  for (int lane = 0; lane < Lanes::kCount; ++lane) first_lanes[lane] = static_cast<Acc>(lane);
+  const Vec lane_index = cv::vx_load(first_lanes);
+  // Reverse match: entry p of a row holds the best score so far of secondary pixel
+  // x1 - 1 - min_d - p (reverse_sign +1) or x0 + min_d + p (-1), and its candidate index; candidate
+  // j of reference pixel x is entry reverse_first(x) + j, so a pixel's candidates are contiguous.
+  const int reverse_sign = frame.reverse_sign;
+  const size_t reverse_size = reverse_sign ? static_cast<size_t>(region.x1 - region.x0 + padded) : 0;
+  Acc* const reverse_scores = scratch(reverse_score_buffer, reverse_size);
+  Acc* const reverse_indices = scratch(reverse_index_buffer, reverse_size);
+  for (int chunk = whole_chunks; chunk < chunks; ++chunk) {
+    Acc pad[Lanes::kCount];
+    for (int lane = 0; lane < Lanes::kCount; ++lane) pad[lane] = chunk * Lanes::kCount + lane < disparities ? 0 : kMaxScore;
+    padding[chunk - whole_chunks] = cv::vx_load(pad);
+  }
+
+  const uchar* candidates[kMaxCameras];
+  ptrdiff_t candidate_x_step[kMaxCameras];
+
+  // Absolute differences of reference row yy against every candidate, into the ring slot of
+  // row yy, updating the column sums by (entering row - leaving row).
+  const auto enterRow = [&](int yy) {
+    const int slot = (yy - (region.y0 - r)) % window;
+    const uchar* reference_row = frame.reference.ptr<uchar>(yy + margin) + margin;
+    for (int c = 0; c < cameras; ++c) {
+      const CandidateSource& source = frame.sources[region.cameras[c]];
+      const uchar* pixel_row = source.buffer.data + source.origin + yy * source.y_step;
+      if (!source.tabulated()) {
+        candidates[c] = pixel_row;
+        candidate_x_step[c] = source.x_step;
+        continue;
+      }
+      uchar* table = tables + c * row_size;
+      const ptrdiff_t step = static_cast<ptrdiff_t>(source.buffer.step);
+      for (int xe = 0; xe < nx; ++xe) {
+        const uchar* pixel = pixel_row + (x0 - r + xe);
+        uchar* entry = table + static_cast<size_t>(xe) * padded;
+        for (int j = 0; j < padded; ++j) {
+          const BilinearTap& tap = source.taps[j];
+          const uchar* q = pixel + tap.dy * step + tap.dx;
+          entry[j] = static_cast<uchar>(
+              (tap.w00 * q[0] + tap.w01 * q[1] + tap.w10 * q[step] + tap.w11 * q[step + 1] + (1 << 15)) >> 16);
+        }
+      }
+      candidates[c] = table - static_cast<ptrdiff_t>(x0 - r) * padded;
+      candidate_x_step[c] = padded;
+    }
+    for (int g = 0; g < groups; ++g) {
+      const int first = groups == 1 ? 0 : g, last = groups == 1 ? cameras : g + 1;
+      // Locals, so that the compiler keeps them in registers across the stores below.
+      const uchar* const first_candidates = candidates[first];
+      const ptrdiff_t first_x_step = candidate_x_step[first];
+      Acc* const ring_row = ring + (static_cast<size_t>(g) * window + slot) * row_size;
+      Acc* const sums = column_sums + g * column_stride + padded;
+      const int count = padded;
+      for (int xe = 0; xe < nx; ++xe) {
+        const int x = x0 - r + xe;
+        const cv::v_uint8 reference = cv::vx_setall_u8(reference_row[x]);
+        const uchar* const own_candidates = first_candidates + x * first_x_step;
+        Acc* const slot_entry = ring_row + static_cast<size_t>(xe) * count;
+        Acc* const sum_entry = sums + static_cast<size_t>(xe) * count;
+        for (int b = 0; b < count; b += kByteLanes) {
+          Vec entering[kVectorsPerBytes];
+          Lanes::widen(cv::v_absdiff(reference, cv::vx_load(own_candidates + b)), entering);
+          for (int c = first + 1; c < last; ++c) {
+            Vec more[kVectorsPerBytes];
+            Lanes::widen(cv::v_absdiff(reference, cv::vx_load(candidates[c] + x * candidate_x_step[c] + b)), more);
+            for (int i = 0; i < kVectorsPerBytes; ++i) entering[i] = Lanes::add(entering[i], more[i]);
+          }
+          for (int i = 0; i < kVectorsPerBytes; ++i) {
+            Acc* const ring_lanes = slot_entry + b + i * Lanes::kCount;
+            Acc* const sum_lanes = sum_entry + b + i * Lanes::kCount;
+            const Vec leaving = cv::vx_load(ring_lanes);
+            cv::v_store(ring_lanes, entering[i]);
+            cv::v_store(sum_lanes, Lanes::slide(cv::vx_load(sum_lanes), entering[i], leaving));
+          }
+        }
+      }
+    }
+  };
+
+  // Winner-takes-all over the scores `curve` of reference pixel x of row y (kept lanes of the padded
+  // candidates), the sum of scores, the runner-up, and the reverse match's best-so-far entries.
+  const bool subpixel = frame.subpixel, second_best = frame.second_best, sum_scores = frame.sum_scores;
+  const int min_disparity = frame.min_disparity;
+  const int chunk_count = chunks, unpadded_chunks = whole_chunks;
+  // `descending`: the pixels of the row come in order of decreasing x.
+  const auto decide = [&](int y, int x, const Acc* curve, bool descending) __attribute__((always_inline)) {
+    const int reverse_first = reverse_sign > 0 ? region.x1 - 1 - x : x - region.x0;
+    Vec candidate_index = lane_index;
+    Vec best = Lanes::all(kMaxScore);
+    cv::v_int32 score_sum = cv::vx_setall_s32(0);
+    for (int chunk = 0; chunk < chunk_count; ++chunk) {
+      const int b = chunk * Lanes::kCount;
+      Vec score = cv::vx_load(curve + b);
+      if (chunk >= unpadded_chunks) {
+        // Scores are never negative: OR with the all-ones-but-sign padding makes those lanes
+        // the largest score, AND with its complement makes them zero.
+        const Vec& pad = padding[chunk - unpadded_chunks];
+        if (sum_scores) score_sum += Lanes::widenSum(score & ~pad);
+        score = score | pad;
+      } else if (sum_scores) {
+        score_sum += Lanes::widenSum(score);
+      }
+      best = cv::v_min(best, score);
+      if (reverse_sign) {
+        // With x increasing, candidates reach a secondary pixel in order of increasing disparity
+        // for sign +1, so a strict < keeps the smallest of tied ones; for -1, or x decreasing, <=.
+        Acc* const entry_scores = reverse_scores + reverse_first + b;
+        Acc* const entry_indices = reverse_indices + reverse_first + b;
+        const Vec previous = cv::vx_load(entry_scores);
+        const Vec better = (reverse_sign > 0) != descending ? score < previous : score <= previous;
+        cv::v_store(entry_scores, cv::v_min(previous, score));
+        cv::v_store(entry_indices, cv::v_select(better, candidate_index, cv::vx_load(entry_indices)));
+        candidate_index = Lanes::add(candidate_index, Lanes::all(Lanes::kCount));
+      }
+    }
+    // The lowest score, then the first (smallest) disparity that has it: the lanes equal to it
+    // as a bit mask, 64 candidates at a time, without data-dependent branches inside a block.
+    const Acc best_score = static_cast<Acc>(cv::v_reduce_min(best));
+    const int j = firstLaneEqual<Lanes>(curve, chunk_count, Lanes::all(best_score));
+    float disparity = static_cast<float>(min_disparity + j);
+    if (subpixel && j > 0 && j < disparities - 1) {
+      const double before = curve[j - 1], after = curve[j + 1];
+      const double curvature = before + after - 2.0 * best_score;
+      if (curvature > 0) disparity += static_cast<float>(0.5 * (before - after) / curvature);
+    }
+    out.disparity(y, x) = disparity;
+    out.best_score(y, x) = static_cast<int>(best_score);
+    out.score_sum(y, x) = cv::v_reduce_sum(score_sum);
+    if (second_best) {
+      // The lowest score with the best and its two neighbours (and the padding) masked out;
+      // only the chunks holding those neighbours need the mask.
+      const int near_first = std::max(j - 1, 0) / Lanes::kCount, near_last = (j + 1) / Lanes::kCount;
+      const Vec low = Lanes::all(j - 1), high = Lanes::all(j + 1), highest = Lanes::all(kMaxScore);
+      Vec runner_up = highest;
+      for (int chunk = 0; chunk < chunk_count; ++chunk) {
+        Vec score = cv::vx_load(curve + chunk * Lanes::kCount);
+        if (chunk >= unpadded_chunks) score = score | padding[chunk - unpadded_chunks];
+        if (chunk >= near_first && chunk <= near_last) {
+          const Vec index = Lanes::add(lane_index, Lanes::all(chunk * Lanes::kCount));
+          score = cv::v_select((index >= low) & (index <= high), highest, score);
+        }
+        runner_up = cv::v_min(runner_up, score);
+      }
+      const Acc second = static_cast<Acc>(cv::v_reduce_min(runner_up));
+      out.second_score(y, x) = second == kMaxScore ? std::numeric_limits<int>::max() : static_cast<int>(second);
+    }
+  };
+
+  // Scanline optimisation: the cost of a path reaching pixel x at candidate d from its neighbour
+  // `previous` along the row is cost(d) + min(previous(d), previous(d +- 1) + p1, min previous + p2)
+  // - min previous (Hirschmuller 2008, eq. 13; subtracting the minimum keeps it bounded by the
+  // largest score + p2). `previous` has one guard lane before and after its candidates.
+  const bool scanline = frame.scanline;
+  const int scale = window * window * (groups == 1 ? cameras : kept);
+  const Vec small_jump = Lanes::all(static_cast<int>(std::lround(frame.scanline_p1 * scale)));
+  const Vec large_jump = Lanes::all(static_cast<int>(std::lround(frame.scanline_p2 * scale)));
+  // Padding lanes of a path hold the largest score, so that no real candidate is reached through
+  // them. Their sums may wrap to negative values, which the OR with `padding` alone would keep
+  // negative: `real_lanes` (all ones in the lanes of real candidates) clears them first.
+  Vec real_lanes[kVectorsPerBytes];
+  for (int k = 0; k < chunk_count - unpadded_chunks; ++k) real_lanes[k] = padding[k] == Lanes::all(0);
+  const auto padded_lanes = [&](const Vec& value, int chunk) {
+    if (chunk < unpadded_chunks) return value;
+    const Vec& pad = padding[chunk - unpadded_chunks];
+    return (value & real_lanes[chunk - unpadded_chunks]) | pad;
+  };
+  // Writes the path reaching a pixel of scores `cost` from its neighbour's path `previous`, whose
+  // lowest entry is `lowest` (none for the first pixel), and returns the new path's lowest entry.
+  const auto followPath = [&](const Acc* cost, const Acc* previous, Acc lowest, Acc* path) {
+    const Vec lowest_all = Lanes::all(lowest);
+    const Vec jump_floor = Lanes::add(lowest_all, large_jump);
+    Vec new_lowest = Lanes::all(kMaxScore);
+    for (int chunk = 0; chunk < chunk_count; ++chunk) {
+      const int b = chunk * Lanes::kCount;
+      Vec value = cv::vx_load(cost + b);
+      if (previous) {
+        const Vec neighbours = cv::v_min(cv::vx_load(previous + b - 1), cv::vx_load(previous + b + 1));
+        const Vec reach = cv::v_min(cv::v_min(cv::vx_load(previous + b), Lanes::add(neighbours, small_jump)), jump_floor);
+        value = Lanes::add(value, Lanes::subtract(reach, lowest_all));
+      }
+      value = padded_lanes(value, chunk);
+      new_lowest = cv::v_min(new_lowest, value);
+      cv::v_store(path + b, value);
+    }
+    return static_cast<Acc>(cv::v_reduce_min(new_lowest));
+  };
+
+  // Horizontal running sum of the column sums gives every candidate's window score of each pixel
+  // of row y; the winner is taken at once, or after the scanline paths over the whole row.
+  const auto matchRow = [&](int y, auto combine_groups) {
+    constexpr bool kCombine = decltype(combine_groups)::value;
+    for (int g = 0; g < groups; ++g) {
+      // The window of the first pixel minus its last column, which the first slide brings in.
+      const Acc* sums = column_sums + g * column_stride;
+      for (int b = 0; b < padded; b += Lanes::kCount) {
+        Vec total = Lanes::all(0);
+        for (int xe = 0; xe < window - 1; ++xe) {
+          total = Lanes::add(total, cv::vx_load(sums + static_cast<size_t>(xe + 1) * padded + b));
+        }
+        cv::v_store(scores + g * padded + b, total);
+      }
+    }
+    // Locals, so that the compiler keeps them in registers across the stores below.
+    Acc* const group_scores = scores;
+    const Acc* const all_sums = column_sums;
+    const size_t stride = column_stride;
+    const int count = padded;
+    Vec sorted[kMaxCameras];
+    Acc forward_lowest = 0;
+    if (reverse_sign) std::fill(reverse_scores, reverse_scores + reverse_size, kMaxScore);
+    for (int x = region.x0; x < region.x1; ++x) {
+      // Columns entering and leaving the window, relative to each group's column sums.
+      const size_t entering = static_cast<size_t>(x - x0 + 2 * r + 1) * count;
+      const size_t leaving = static_cast<size_t>(x - x0) * count;
+      // The pixel's combined scores: in the group scores themselves for one group, else in a
+      // buffer of their own; for the scanline, in the row's costs.
+      Acc* const pixel_costs = scanline ? row_costs + static_cast<size_t>(x - region.x0) * count
+                                        : (kCombine ? combined : group_scores);
+      for (int chunk = 0; chunk < chunk_count; ++chunk) {
+        const int b = chunk * Lanes::kCount;
+        if constexpr (!kCombine) {
+          const Vec value = Lanes::slide(cv::vx_load(group_scores + b), cv::vx_load(all_sums + b + entering),
+                                         cv::vx_load(all_sums + b + leaving));
+          cv::v_store(group_scores + b, value);
+          if (scanline) cv::v_store(pixel_costs + b, value);
+        } else {
+          for (int g = 0; g < groups; ++g) {
+            Acc* const group_score = group_scores + g * count + b;
+            const Acc* const sums = all_sums + g * stride + b;
+            Vec value = Lanes::slide(cv::vx_load(group_score), cv::vx_load(sums + entering), cv::vx_load(sums + leaving));
+            cv::v_store(group_score, value);
+            // Insert into the `kept` lowest so far (a min/max insertion network).
+            for (int k = 0; k < std::min(g, kept); ++k) {
+              const Vec low = cv::v_min(sorted[k], value);
+              value = cv::v_max(sorted[k], value);
+              sorted[k] = low;
+            }
+            if (g < kept) sorted[g] = value;
+          }
+          Vec score = sorted[0];
+          for (int k = 1; k < kept; ++k) score = Lanes::add(score, sorted[k]);
+          cv::v_store(pixel_costs + b, score);
+        }
+      }
+      if (!scanline) {
+        decide(y, x, pixel_costs, false);
+      } else {
+        // The path from the left, in the same sweep as the window scores.
+        const size_t i = static_cast<size_t>(x - region.x0);
+        forward_lowest = followPath(pixel_costs, i == 0 ? nullptr : forward_paths + (i - 1) * path_stride,
+                                    forward_lowest, forward_paths + i * path_stride);
+      }
+    }
+    if (!scanline) return;
+    // The path from the right, added to the one from the left, gives the aggregated scores; the
+    // winner is taken in the same sweep.
+    Acc backward_lowest = 0;
+    for (int x = region.x1 - 1; x >= region.x0; --x) {
+      const size_t i = static_cast<size_t>(x - region.x0);
+      const bool first = x == region.x1 - 1;
+      Acc* const path = backward_paths + (i % 2) * path_stride;
+      const Acc* const previous = first ? nullptr : backward_paths + ((i + 1) % 2) * path_stride;
+      backward_lowest = followPath(row_costs + i * padded, previous, backward_lowest, path);
+      const Acc* const forward = forward_paths + i * path_stride;
+      for (int chunk = 0; chunk < chunk_count; ++chunk) {
+        const int b = chunk * Lanes::kCount;
+        const Vec sum = Lanes::add(cv::vx_load(forward + b), cv::vx_load(path + b));
+        // Padding lanes (the largest score twice, wrapped) become zero; decide() pads them again.
+        cv::v_store(combined + b, chunk < unpadded_chunks ? sum : sum & real_lanes[chunk - unpadded_chunks]);
+      }
+      decide(y, x, combined, true);
+    }
+  };
+
+  const auto writeReverse = [&](int y) {
+    if (!reverse_sign) return;
+    float* reverse_row = out.reverse_disparity.ptr<float>(y);
+    const int width = out.reverse_disparity.cols;
+    for (size_t p = 0; p < reverse_size; ++p) {
+      const int pixel = reverse_sign > 0 ? region.x1 - 1 - min_disparity - static_cast<int>(p)
+                                         : region.x0 + min_disparity + static_cast<int>(p);
+      if (pixel < 0 || pixel >= width || reverse_scores[p] == kMaxScore) continue;
+      reverse_row[pixel] = static_cast<float>(min_disparity + reverse_indices[p]);
+    }
+  };
+
+  for (int yy = region.y0 - r; yy < region.y0 + r; ++yy) enterRow(yy);
+  for (int y = region.y0; y < region.y1; ++y) {
+    enterRow(y + r);
+    if (groups == 1) {
+      matchRow(y, std::false_type{});
+    } else {
+      matchRow(y, std::true_type{});
+    }
+    writeReverse(y);
+  }
+}
+
+// This build's kernel.
+inline SadKernel makeSadKernel(SimdLevel level) {
+  return SadKernel{level, kByteLanes, &matchRegion<int16_t>, &matchRegion<int32_t>};
+}
+
+}  // namespace STEREONAV_SAD_KERNEL_NAMESPACE
+}  // namespace stereonav
