@@ -81,6 +81,21 @@ struct AccumulatorLanes<int32_t> {
   }
 };
 
+// The smallest lane of `v`, in every lane.
+CV_ALWAYS_INLINE cv::v_int16x8 minInEveryLane(const cv::v_int16x8& v) { return cv::v_setall_s16(cv::v_reduce_min(v)); }
+CV_ALWAYS_INLINE cv::v_int32x4 minInEveryLane(const cv::v_int32x4& v) { return cv::v_setall_s32(cv::v_reduce_min(v)); }
+#if CV_SIMD256
+CV_ALWAYS_INLINE cv::v_int16x16 minInEveryLane(const cv::v_int16x16& v) {
+  // The lanes it is used on (scores and paths) are never negative, so their unsigned minimum is
+  // the minimum, which phminposuw finds among 8 lanes in one instruction.
+  const __m128i half = _mm_min_epu16(_mm256_castsi256_si128(v.val), _mm256_extracti128_si256(v.val, 1));
+  return cv::v_int16x16(_mm256_broadcastw_epi16(_mm_minpos_epu16(half)));
+}
+CV_ALWAYS_INLINE cv::v_int32x8 minInEveryLane(const cv::v_int32x8& v) {
+  return cv::v256_setall_s32(cv::v_reduce_min(v));
+}
+#endif
+
 // Grows `buffer` if needed (buffers are reused from call to call: frames of one size need no new
 // memory) and returns `size` elements of it that start on a cache line: the loop reads and writes
 // whole vectors at whole-vector offsets, and a 32-byte vector on a 16-byte boundary (all that
@@ -146,17 +161,12 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
   Acc* const scores = scratch(score_buffer, static_cast<size_t>(groups) * padded);
   Acc* const combined = scratch(combined_buffer, padded);
   // Scanline: the scores of every pixel of a row, the paths from the left, and the last two of
-  // the path from the right. A path's candidates sit between guard lanes that hold the largest
-  // score, so that the neighbours of its first and last candidates are read without a test.
+  // the path from the right.
   const size_t row_pixels = frame.scanline ? static_cast<size_t>(region.x1 - region.x0) : 0;
-  const size_t path_stride = static_cast<size_t>(padded) + 2 * Lanes::kCount;
+  const size_t path_stride = static_cast<size_t>(padded);
   Acc* const row_costs = scratch(row_cost_buffer, row_pixels * padded);
-  Acc* const forward_paths = scratch(forward_path_buffer, row_pixels * path_stride) + Lanes::kCount;
-  Acc* const backward_paths = scratch(backward_path_buffer, 2 * path_stride) + Lanes::kCount;
-  if (frame.scanline) {
-    std::fill(forward_paths - Lanes::kCount, forward_paths - Lanes::kCount + row_pixels * path_stride, kMaxScore);
-    std::fill(backward_paths - Lanes::kCount, backward_paths - Lanes::kCount + 2 * path_stride, kMaxScore);
-  }
+  Acc* const forward_paths = scratch(forward_path_buffer, row_pixels * path_stride);
+  Acc* const backward_paths = scratch(backward_path_buffer, 2 * path_stride);
   uchar* const tables = scratch(table_buffer, cameras * row_size);
 
   const int chunks = padded / Lanes::kCount;
@@ -282,8 +292,9 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
     }
     // The lowest score, then the first (smallest) disparity that has it: the lanes equal to it
     // as a bit mask, 64 candidates at a time, without data-dependent branches inside a block.
-    const Acc best_score = static_cast<Acc>(cv::v_reduce_min(best));
-    const int j = firstLaneEqual<Lanes>(curve, chunk_count, Lanes::all(best_score));
+    const Vec best_all = minInEveryLane(best);
+    const Acc best_score = static_cast<Acc>(cv::v_extract_n<0>(best_all));
+    const int j = firstLaneEqual<Lanes>(curve, chunk_count, best_all);
     float disparity = static_cast<float>(min_disparity + j);
     if (subpixel && j > 0 && j < disparities - 1) {
       const double before = curve[j - 1], after = curve[j + 1];
@@ -308,7 +319,7 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
         }
         runner_up = cv::v_min(runner_up, score);
       }
-      const Acc second = static_cast<Acc>(cv::v_reduce_min(runner_up));
+      const Acc second = static_cast<Acc>(cv::v_extract_n<0>(minInEveryLane(runner_up)));
       out.second_score(y, x) = second == kMaxScore ? std::numeric_limits<int>::max() : static_cast<int>(second);
     }
   };
@@ -316,7 +327,7 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
   // Scanline optimisation: the cost of a path reaching pixel x at candidate d from its neighbour
   // `previous` along the row is cost(d) + min(previous(d), previous(d +- 1) + p1, min previous + p2)
   // - min previous (Hirschmuller 2008, eq. 13; subtracting the minimum keeps it bounded by the
-  // largest score + p2). `previous` has one guard lane before and after its candidates.
+  // largest score + p2).
   const bool scanline = frame.scanline;
   const int scale = window * window * (groups == 1 ? cameras : kept);
   const Vec small_jump = Lanes::all(static_cast<int>(std::lround(frame.scanline_p1 * scale)));
@@ -332,24 +343,33 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
     return (value & real_lanes[chunk - unpadded_chunks]) | pad;
   };
   // Writes the path reaching a pixel of scores `cost` from its neighbour's path `previous`, whose
-  // lowest entry is `lowest` (none for the first pixel), and returns the new path's lowest entry.
-  const auto followPath = [&](const Acc* cost, const Acc* previous, Acc lowest, Acc* path) {
-    const Vec lowest_all = Lanes::all(lowest);
+  // lowest entry is in every lane of `lowest_all` (none for the first pixel), and returns the new
+  // path's lowest entry the same way: that minimum is the step from pixel to pixel that nothing
+  // can overlap, so it stays in a vector register.
+  const auto followPath = [&](const Acc* cost, const Acc* previous, const Vec& lowest_all, Acc* path) {
     const Vec jump_floor = Lanes::add(lowest_all, large_jump);
+    const Vec beyond = Lanes::all(kMaxScore);  // the neighbours of the first and last candidates
     Vec new_lowest = Lanes::all(kMaxScore);
+    // The neighbouring candidates come from whole vectors of `previous`: loading them one lane off
+    // the vectors just stored would wait for those stores to reach the cache, at every pixel.
+    Vec below = beyond, here = previous ? cv::vx_load(previous) : beyond;
     for (int chunk = 0; chunk < chunk_count; ++chunk) {
       const int b = chunk * Lanes::kCount;
       Vec value = cv::vx_load(cost + b);
       if (previous) {
-        const Vec neighbours = cv::v_min(cv::vx_load(previous + b - 1), cv::vx_load(previous + b + 1));
-        const Vec reach = cv::v_min(cv::v_min(cv::vx_load(previous + b), Lanes::add(neighbours, small_jump)), jump_floor);
+        const Vec above = chunk + 1 < chunk_count ? cv::vx_load(previous + b + Lanes::kCount) : beyond;
+        const Vec neighbours =
+            cv::v_min(cv::v_extract<Lanes::kCount - 1>(below, here), cv::v_extract<1>(here, above));
+        const Vec reach = cv::v_min(cv::v_min(here, Lanes::add(neighbours, small_jump)), jump_floor);
+        below = here;
+        here = above;
         value = Lanes::add(value, Lanes::subtract(reach, lowest_all));
       }
       value = padded_lanes(value, chunk);
       new_lowest = cv::v_min(new_lowest, value);
       cv::v_store(path + b, value);
     }
-    return static_cast<Acc>(cv::v_reduce_min(new_lowest));
+    return minInEveryLane(new_lowest);
   };
 
   // Horizontal running sum of the column sums gives every candidate's window score of each pixel
@@ -373,7 +393,7 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
     const size_t stride = column_stride;
     const int count = padded;
     Vec sorted[kMaxCameras];
-    Acc forward_lowest = 0;
+    Vec forward_lowest = Lanes::all(0);
     if (reverse_sign) std::fill(reverse_scores, reverse_scores + reverse_size, kMaxScore);
     for (int x = region.x0; x < region.x1; ++x) {
       // Columns entering and leaving the window, relative to each group's column sums.
@@ -421,7 +441,7 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
     if (!scanline) return;
     // The path from the right, added to the one from the left, gives the aggregated scores; the
     // winner is taken in the same sweep.
-    Acc backward_lowest = 0;
+    Vec backward_lowest = Lanes::all(0);
     for (int x = region.x1 - 1; x >= region.x0; --x) {
       const size_t i = static_cast<size_t>(x - region.x0);
       const bool first = x == region.x1 - 1;

@@ -57,19 +57,21 @@ void rejectIndistinctMatches(cv::Mat1f& disparity, const SadMatch& match, double
 void rejectInconsistentMatches(cv::Mat1f& disparity, const cv::Mat1f& swapped, const SecondaryCamera& first,
                                double max_difference) {
   CV_Assert(disparity.size() == swapped.size());
-  for (int y = 0; y < disparity.rows; ++y) {
+  const int width = disparity.cols, height = disparity.rows;
+  const float bx = static_cast<float>(first.bx), by = static_cast<float>(first.by);
+  const float tolerance = static_cast<float>(max_difference);
+  for (int y = 0; y < height; ++y) {
     float* row = disparity.ptr<float>(y);
-    for (int x = 0; x < disparity.cols; ++x) {
+    for (int x = 0; x < width; ++x) {
+      // Branch-free: valid and invalid pixels are mixed at random, which a branch would mispredict.
+      // An invalid disparity (+inf) rounds to a position outside the image, and an invalid
+      // swapped disparity (+inf) fails the comparison.
       const float d = row[x];
-      if (!isValidDisparity(d)) continue;
-      // cvRound is one instruction where std::lround is a library call, a tenth of the whole
-      // match's time; they differ only on exact halves, which it rounds to even.
-      const int xs = cvRound(x - first.bx * d), ys = cvRound(y - first.by * d);
-      const bool inside = xs >= 0 && xs < disparity.cols && ys >= 0 && ys < disparity.rows;
-      // An invalid swapped disparity (+inf) fails the comparison as well.
-      if (!inside || !(std::abs(swapped(ys, xs) - d) <= max_difference)) {
-        row[x] = kInvalidDisparity;
-      }
+      const int xs = cvRound(static_cast<float>(x) - bx * d), ys = cvRound(static_cast<float>(y) - by * d);
+      const bool inside = static_cast<unsigned>(xs) < static_cast<unsigned>(width) &&
+                          static_cast<unsigned>(ys) < static_cast<unsigned>(height);
+      const float seen = swapped(inside ? ys : 0, inside ? xs : 0);
+      row[x] = inside && std::abs(seen - d) <= tolerance ? d : kInvalidDisparity;
     }
   }
 }
