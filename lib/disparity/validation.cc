@@ -9,31 +9,20 @@
 
 namespace stereonav {
 
-void textureMap(const cv::Mat1b& reference, int window, double sigma, cv::Mat1f& texture) {
-  thread_local cv::Mat1f magnitude;  // scratch, reused from call to call
-  laplacianOfGaussian(reference, sigma, magnitude);
-  magnitude = cv::abs(magnitude);
-  cv::boxFilter(magnitude, texture, CV_32F, cv::Size(window, window), cv::Point(-1, -1), true,
-                cv::BORDER_REPLICATE);
-}
-
-void rejectLowTexture(cv::Mat1f& disparity, const cv::Mat1f& texture, double threshold) {
-  CV_Assert(disparity.size() == texture.size());
-  const float minimum = static_cast<float>(threshold);
-  for (int y = 0; y < disparity.rows; ++y) {
-    float* row = disparity.ptr<float>(y);
-    const float* texture_row = texture.ptr<float>(y);
-    for (int x = 0; x < disparity.cols; ++x) row[x] = texture_row[x] > minimum ? row[x] : kInvalidDisparity;
-  }
-}
-
 namespace {
 
+// `rows` of an image of `height` rows (Range::all() is every row).
+cv::Range rowsOf(const cv::Range& rows, int height) {
+  return rows == cv::Range::all() ? cv::Range(0, height) : rows;
+}
+
 // Keeps the pixels whose best score is below `ratio` times `reference`'s score.
-void keepBestBelow(cv::Mat1f& disparity, const cv::Mat1i& best_score, const cv::Mat1i& reference, double ratio) {
+void keepBestBelow(cv::Mat1f& disparity, const cv::Mat1i& best_score, const cv::Mat1i& reference, double ratio,
+                   const cv::Range& rows) {
   CV_Assert(disparity.size() == best_score.size() && disparity.size() == reference.size());
   const float factor = static_cast<float>(ratio);
-  for (int y = 0; y < disparity.rows; ++y) {
+  const cv::Range tested = rowsOf(rows, disparity.rows);
+  for (int y = tested.start; y < tested.end; ++y) {
     float* row = disparity.ptr<float>(y);
     const int* best = best_score.ptr<int>(y);
     const int* other = reference.ptr<int>(y);
@@ -46,21 +35,41 @@ void keepBestBelow(cv::Mat1f& disparity, const cv::Mat1i& best_score, const cv::
 
 }  // namespace
 
-void rejectAmbiguousMatches(cv::Mat1f& disparity, const SadMatch& match, double threshold) {
-  keepBestBelow(disparity, match.best_score, match.score_sum, threshold);
+void textureMap(const cv::Mat1b& reference, int window, double sigma, cv::Mat1f& texture) {
+  thread_local cv::Mat1f magnitude;  // scratch, reused from call to call
+  laplacianOfGaussian(reference, sigma, magnitude);
+  magnitude = cv::abs(magnitude);
+  cv::boxFilter(magnitude, texture, CV_32F, cv::Size(window, window), cv::Point(-1, -1), true,
+                cv::BORDER_REPLICATE);
 }
 
-void rejectIndistinctMatches(cv::Mat1f& disparity, const SadMatch& match, double ratio) {
-  keepBestBelow(disparity, match.best_score, match.second_score, ratio);
+void rejectLowTexture(cv::Mat1f& disparity, const cv::Mat1f& texture, double threshold, const cv::Range& rows) {
+  CV_Assert(disparity.size() == texture.size());
+  const float minimum = static_cast<float>(threshold);
+  const cv::Range tested = rowsOf(rows, disparity.rows);
+  for (int y = tested.start; y < tested.end; ++y) {
+    float* row = disparity.ptr<float>(y);
+    const float* texture_row = texture.ptr<float>(y);
+    for (int x = 0; x < disparity.cols; ++x) row[x] = texture_row[x] > minimum ? row[x] : kInvalidDisparity;
+  }
+}
+
+void rejectAmbiguousMatches(cv::Mat1f& disparity, const SadMatch& match, double threshold, const cv::Range& rows) {
+  keepBestBelow(disparity, match.best_score, match.score_sum, threshold, rows);
+}
+
+void rejectIndistinctMatches(cv::Mat1f& disparity, const SadMatch& match, double ratio, const cv::Range& rows) {
+  keepBestBelow(disparity, match.best_score, match.second_score, ratio, rows);
 }
 
 void rejectInconsistentMatches(cv::Mat1f& disparity, const cv::Mat1f& swapped, const SecondaryCamera& first,
-                               double max_difference) {
+                               double max_difference, const cv::Range& rows) {
   CV_Assert(disparity.size() == swapped.size());
   const int width = disparity.cols, height = disparity.rows;
+  const cv::Range tested = rowsOf(rows, height);
   const float bx = static_cast<float>(first.bx), by = static_cast<float>(first.by);
   const float tolerance = static_cast<float>(max_difference);
-  for (int y = 0; y < height; ++y) {
+  for (int y = tested.start; y < tested.end; ++y) {
     float* row = disparity.ptr<float>(y);
     for (int x = 0; x < width; ++x) {
       // Branch-free: valid and invalid pixels are mixed at random, which a branch would mispredict.

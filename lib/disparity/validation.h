@@ -8,7 +8,9 @@
 namespace stereonav {
 
 // The validation tests of paper section 2.2. Each marks rejected pixels kInvalidDisparity in
-// place; each is tuned by one threshold, trading quantity of data for quality.
+// place; each is tuned by one threshold, trading quantity of data for quality. Each tests the
+// pixels of `rows` only (all by default) and writes nothing else, so that stripes of rows can be
+// tested in parallel.
 
 // Mean of |Laplacian of Gaussian| of the reference image over a window x window square, in grey
 // levels: low in untextured patches, whose matches are ambiguous. `texture` is reused if it
@@ -16,16 +18,19 @@ namespace stereonav {
 void textureMap(const cv::Mat1b& reference, int window, double sigma, cv::Mat1f& texture);
 
 // "Sufficient texture" test: rejects pixels whose texture (textureMap) is not above `threshold`.
-void rejectLowTexture(cv::Mat1f& disparity, const cv::Mat1f& texture, double threshold);
+void rejectLowTexture(cv::Mat1f& disparity, const cv::Mat1f& texture, double threshold,
+                      const cv::Range& rows = cv::Range::all());
 
 // "Quality of match" test: rejects pixels whose best score divided by the sum of all candidate
 // scores is not below `threshold` (a flat score curve, typical of occlusions and repetition).
-void rejectAmbiguousMatches(cv::Mat1f& disparity, const SadMatch& match, double threshold);
+void rejectAmbiguousMatches(cv::Mat1f& disparity, const SadMatch& match, double threshold,
+                            const cv::Range& rows = cv::Range::all());
 
 // Distinctiveness test: rejects pixels whose best score divided by the runner-up's
 // (SadMatch::second_score, candidates more than one disparity from the best) is not below `ratio`.
 // Unlike the quality-of-match ratio, its meaning does not depend on the number of candidates.
-void rejectIndistinctMatches(cv::Mat1f& disparity, const SadMatch& match, double ratio);
+void rejectIndistinctMatches(cv::Mat1f& disparity, const SadMatch& match, double ratio,
+                             const cv::Range& rows = cv::Range::all());
 
 // Left-right consistency: `swapped` is the disparity image matched with `first` camera as the
 // reference (swapReferenceWithFirstSecondary). A pixel at disparity d is kept only if the pixel
@@ -33,6 +38,6 @@ void rejectIndistinctMatches(cv::Mat1f& disparity, const SadMatch& match, double
 // `max_difference` of d. Pixels whose match lies where the swapped search cannot see every
 // candidate (within max_disparity of that camera's far border) are rejected too.
 void rejectInconsistentMatches(cv::Mat1f& disparity, const cv::Mat1f& swapped, const SecondaryCamera& first,
-                               double max_difference);
+                               double max_difference, const cv::Range& rows = cv::Range::all());
 
 }  // namespace stereonav
