@@ -49,6 +49,7 @@ struct PreparedFrame {
   int min_disparity = 0;
   int disparities = 0;         // D
   int padded_disparities = 0;  // D rounded up to whole byte vectors
+  int max_difference = 255;    // the largest absolute difference of two prefiltered pixels
   bool best_half = false;
   bool subpixel = false;
   bool second_best = false;  // find the runner-up score (SadMatch::second_score)

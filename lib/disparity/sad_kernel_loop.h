@@ -222,6 +222,7 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
     }
     for (int g = 0; g < groups; ++g) {
       const int first = groups == 1 ? 0 : g, last = groups == 1 ? cameras : g + 1;
+      const bool byte_sums = (last - first) * frame.max_difference <= 255;
       // Locals, so that the compiler keeps them in registers across the stores below.
       const uchar* const first_candidates = candidates[first];
       const ptrdiff_t first_x_step = candidate_x_step[first];
@@ -236,11 +237,21 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
         Acc* const sum_entry = sums + static_cast<size_t>(xe) * count;
         for (int b = 0; b < count; b += kByteLanes) {
           Vec entering[kVectorsPerBytes];
-          Lanes::widen(cv::v_absdiff(reference, cv::vx_load(own_candidates + b)), entering);
-          for (int c = first + 1; c < last; ++c) {
-            Vec more[kVectorsPerBytes];
-            Lanes::widen(cv::v_absdiff(reference, cv::vx_load(candidates[c] + x * candidate_x_step[c] + b)), more);
-            for (int i = 0; i < kVectorsPerBytes; ++i) entering[i] = Lanes::add(entering[i], more[i]);
+          const cv::v_uint8 own = cv::v_absdiff(reference, cv::vx_load(own_candidates + b));
+          if (byte_sums) {
+            // The differences of every camera of the group add up within a byte: widen once.
+            cv::v_uint8 total = own;
+            for (int c = first + 1; c < last; ++c) {
+              total = cv::v_add_wrap(total, cv::v_absdiff(reference, cv::vx_load(candidates[c] + x * candidate_x_step[c] + b)));
+            }
+            Lanes::widen(total, entering);
+          } else {
+            Lanes::widen(own, entering);
+            for (int c = first + 1; c < last; ++c) {
+              Vec more[kVectorsPerBytes];
+              Lanes::widen(cv::v_absdiff(reference, cv::vx_load(candidates[c] + x * candidate_x_step[c] + b)), more);
+              for (int i = 0; i < kVectorsPerBytes; ++i) entering[i] = Lanes::add(entering[i], more[i]);
+            }
           }
           for (int i = 0; i < kVectorsPerBytes; ++i) {
             Acc* const ring_lanes = slot_entry + b + i * Lanes::kCount;

@@ -141,7 +141,8 @@ void visibleRange(double b, int min_d, int max_d, int size, int& lo, int& hi) {
   hi = std::min(size - 1, size - 1 + static_cast<int>(std::floor(std::min(near_shift, far_shift))));
 }
 
-std::vector<MatchRegion> matchRegions(const StereoFrame& frame, int min_d, int max_d) {
+// The regions to match, and in `unseen` the rectangles that no camera sees at every candidate.
+std::vector<MatchRegion> matchRegions(const StereoFrame& frame, int min_d, int max_d, std::vector<cv::Rect>& unseen) {
   const int width = frame.reference.cols, height = frame.reference.rows;
   const size_t cameras = frame.secondaries.size();
   std::vector<int> x_lo(cameras), x_hi(cameras), y_lo(cameras), y_hi(cameras);
@@ -158,6 +159,7 @@ std::vector<MatchRegion> matchRegions(const StereoFrame& frame, int min_d, int m
     cuts->erase(std::unique(cuts->begin(), cuts->end()), cuts->end());
   }
   std::vector<MatchRegion> regions;
+  unseen.clear();
   for (size_t i = 0; i + 1 < y_cuts.size(); ++i) {
     for (size_t k = 0; k + 1 < x_cuts.size(); ++k) {
       MatchRegion cell{x_cuts[k], x_cuts[k + 1], y_cuts[i], y_cuts[i + 1], {}};
@@ -166,7 +168,10 @@ std::vector<MatchRegion> matchRegions(const StereoFrame& frame, int min_d, int m
           cell.cameras.push_back(static_cast<int>(c));
         }
       }
-      if (cell.cameras.empty()) continue;
+      if (cell.cameras.empty()) {
+        unseen.emplace_back(cell.x0, cell.y0, cell.x1 - cell.x0, cell.y1 - cell.y0);
+        continue;
+      }
       MatchRegion* left = regions.empty() ? nullptr : &regions.back();
       if (left && left->y0 == cell.y0 && left->x1 == cell.x0 && left->cameras == cell.cameras) {
         left->x1 = cell.x1;
@@ -204,6 +209,7 @@ void prepareFrame(const StereoFrame& frame, const StereoOptions& options, const 
   prepared.min_disparity = options.min_disparity;
   prepared.disparities = options.disparityCount();
   prepared.padded_disparities = roundUp(prepared.disparities, kernel.byte_lanes);
+  prepared.max_difference = maxPrefilteredDifference(options.prefilter, options.prefilter_cap);
   prepared.margin = prepared.radius + prepared.padded_disparities + 2;
   prepared.best_half = options.combination == CameraCombination::kBestHalf;
   prepared.subpixel = options.subpixel;
@@ -226,28 +232,33 @@ void prepareFrame(const StereoFrame& frame, const StereoOptions& options, const 
   }
 }
 
-// Every output image at its starting value; the left-right check's and the runner-up's images only
-// when they are asked for (a binocular horizontal rig for the one-pass left-right check).
-void resetResult(int height, int width, const StereoOptions& options, PreparedFrame& prepared, SadMatch& match) {
+// The output images, with the pixels of the `unseen` rectangles at their starting values (the
+// loop writes every other pixel); the left-right check's and the runner-up's images only when
+// they are asked for (a binocular horizontal rig for the one-pass left-right check).
+void resetResult(int height, int width, const StereoOptions& options, const std::vector<cv::Rect>& unseen,
+                 PreparedFrame& prepared, SadMatch& match) {
+  const auto reset = [&](cv::Mat& image, const cv::Scalar& value) {
+    for (const cv::Rect& rect : unseen) image(rect).setTo(value);
+  };
   match.disparity.create(height, width);
-  match.disparity.setTo(kInvalidDisparity);
+  reset(match.disparity, kInvalidDisparity);
   match.best_score.create(height, width);
-  match.best_score.setTo(0);
+  reset(match.best_score, 0);
   match.score_sum.create(height, width);
-  match.score_sum.setTo(0);
+  reset(match.score_sum, 0);
   const CandidateSource& first_source = prepared.sources.front();
   prepared.reverse_sign = options.left_right_check && prepared.sources.size() == 1 && first_source.step_y == 0
                               ? first_source.step_x
                               : 0;
   if (prepared.reverse_sign) {
     match.reverse_disparity.create(height, width);
-    match.reverse_disparity.setTo(kInvalidDisparity);
+    match.reverse_disparity.setTo(kInvalidDisparity);  // the loop writes only the pixels matched back
   } else {
     match.reverse_disparity.release();
   }
   if (prepared.second_best) {
     match.second_score.create(height, width);
-    match.second_score.setTo(std::numeric_limits<int>::max());
+    reset(match.second_score, std::numeric_limits<int>::max());
   } else {
     match.second_score.release();
   }
@@ -272,10 +283,11 @@ const SadMatch& SadMatcher::match(const StereoFrame& frame) {
   const SadKernel& kernel = *workspace_->kernel;
   prepareFrame(frame, options, kernel, prepared);
   SadMatch& match = workspace_->result;
-  resetResult(frame.reference.rows, frame.reference.cols, options, prepared, match);
+  std::vector<cv::Rect> unseen;
+  const std::vector<MatchRegion> regions = matchRegions(frame, options.min_disparity, options.max_disparity, unseen);
+  resetResult(frame.reference.rows, frame.reference.cols, options, unseen, prepared, match);
 
   const int height = frame.reference.rows;
-  const std::vector<MatchRegion> regions = matchRegions(frame, options.min_disparity, options.max_disparity);
   const long long largest_score = static_cast<long long>(options.window) * options.window *
                                   maxPrefilteredDifference(options.prefilter, options.prefilter_cap) *
                                   static_cast<long long>(frame.secondaries.size());

@@ -7,6 +7,7 @@
 #include <limits>
 #include <vector>
 
+#include "disparity/prefilter.h"
 #include "synthetic_scene.h"
 
 namespace stereonav {
@@ -185,11 +186,19 @@ StereoFrame noiseFrame(const std::vector<SecondaryCamera>& cameras, cv::Size siz
   return frame;
 }
 
-void expectMatchesBruteForce(const std::vector<SecondaryCamera>& cameras, StereoOptions options) {
+// The matcher's scores against the brute-force ones at a few points; with a prefilter, the brute
+// force sums the differences of the prefiltered images (raw grey levels by default).
+void expectMatchesBruteForce(const std::vector<SecondaryCamera>& cameras, StereoOptions options,
+                             Prefilter prefilter = Prefilter::kNone) {
   std::vector<cv::Mat1b> images;
   const StereoFrame frame = noiseFrame(cameras, cv::Size(80, 60), 11, images);
-  options.prefilter = Prefilter::kNone;  // compare raw grey levels
-  options.second_best_ratio = 0.9;        // so that the runner-up is found
+  options.prefilter = prefilter;
+  options.second_best_ratio = 0.9;  // so that the runner-up is found
+  for (cv::Mat1b& image : images) {
+    cv::Mat1b filtered;
+    prefilterImage(image, prefilter, options.prefilter_cap, options.texture_sigma, filtered);
+    image = filtered;
+  }
   const SadMatch match = SadMatcher(options).match(frame);
   const bool best_half = options.combination == CameraCombination::kBestHalf;
   // Points where every camera of the cases below sees every candidate.
@@ -251,6 +260,13 @@ TEST(SadMatcherTest, ScoresEqualSumOfCameraSads) {
   StereoOptions options = matchOptions();
   options.max_disparity = 12;  // 13 candidates: the last vector is partly padding
   expectMatchesBruteForce({{-1, 0}, {0, -1}, {1, 0}}, options);
+}
+
+// x-Sobel differences are at most 62: those of up to four cameras add up within a byte, which
+// the loop uses to widen them once.
+TEST(SadMatcherTest, ScoresEqualSumOfCameraSadsOfThePrefilteredImages) {
+  expectMatchesBruteForce({{-1, 0}, {0, -1}, {1, 0}}, matchOptions(), Prefilter::kXSobel);
+  expectMatchesBruteForce({{1, 1}, {-1, 1}, {1, -1}, {-1, -1}}, matchOptions(), Prefilter::kXSobel);
 }
 
 TEST(SadMatcherTest, ScoresEqualPlainSadDiagonalCameras) {
