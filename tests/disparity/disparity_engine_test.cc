@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "disparity/disparity_evaluation.h"
+#include "disparity/disparity_image.h"
 #include "shipped_config.h"
 #include "tsukuba.h"
 
@@ -120,6 +121,25 @@ TEST(TsukubaTest, TighterUniquenessThresholdTradesDensityForAccuracy) {
   steps[2].uniqueness_threshold = 0.04;
   steps[3].uniqueness_threshold = 0.03;
   expectQualityQuantityTradeOff(steps, "uniqueness off / 0.045 / 0.04 / 0.03");
+}
+
+// Stripes of rows matched and validated in parallel give the image one thread gives, with every
+// test on: texture, quality of match, distinctiveness and both kinds of left-right check.
+TEST(TsukubaTest, ThreadsGiveTheSameDisparities) {
+  StereoOptions options = testing::shippedStereoOptions("stereo_real_images.ini");
+  options.max_disparity = 15;
+  options.texture_threshold = 1.0;
+  options.uniqueness_threshold = 0.1;
+  for (const StereoFrame& frame : {tsukubaBinocular(), tsukubaMultiBaseline()}) {
+    options.threads = 1;
+    cv::Mat1f single = computeDisparity(frame, options);
+    options.threads = 3;
+    cv::Mat1f striped = computeDisparity(frame, options);
+    EXPECT_GT(cv::countNonZero(single != kInvalidDisparity), single.total() / 2);
+    single.setTo(-1, single == kInvalidDisparity);
+    striped.setTo(-1, striped == kInvalidDisparity);
+    EXPECT_EQ(cv::norm(single, striped, cv::NORM_INF), 0.0);
+  }
 }
 
 TEST(DisparityEngineTest, RejectsADisparityRangeAsWideAsTheImage) {

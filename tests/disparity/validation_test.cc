@@ -147,6 +147,31 @@ TEST(LeftRightCheckTest, LooksUpTheMatchedPixelInTheSwappedImage) {
   EXPECT_EQ(disparity(0, 1), kInvalidDisparity);
 }
 
+// The tests of a stripe of rows read the other rows (the vertical camera's match lies below)
+// but write only their own, which is what lets the engine run stripes in parallel.
+TEST(LeftRightCheckTest, TestsOnlyTheRowsAskedFor) {
+  cv::Mat1f disparity(10, 10, 6.0f), swapped(10, 10, kInvalidDisparity);
+  swapped.rowRange(5, 10).setTo(6.0f);  // rows 2..6 match rows 5..9 in the camera at (0, -0.5)
+  rejectInconsistentMatches(disparity, swapped, {0, -0.5}, 0.0, cv::Range(2, 4));
+  for (int y = 0; y < 10; ++y) {
+    for (int x = 0; x < 10; ++x) EXPECT_EQ(disparity(y, x), 6.0f) << "(" << x << ", " << y << ")";
+  }
+  rejectInconsistentMatches(disparity, swapped, {0, -0.5}, 0.0, cv::Range(7, 9));  // matches below the image
+  EXPECT_EQ(cv::countNonZero(disparity == kInvalidDisparity), 20);
+  EXPECT_EQ(cv::countNonZero(disparity.rowRange(7, 9) == kInvalidDisparity), 20);
+}
+
+TEST(UniquenessTest, TestsOnlyTheRowsAskedFor) {
+  SadMatch match;
+  match.disparity = cv::Mat1f(4, 3, 5.0f);
+  match.best_score = cv::Mat1i(4, 3, 50);
+  match.score_sum = cv::Mat1i(4, 3, 100);  // every ratio 0.5: all rejected at 0.2
+  cv::Mat1f disparity = match.disparity.clone();
+  rejectAmbiguousMatches(disparity, match, 0.2, cv::Range(1, 3));
+  EXPECT_EQ(cv::countNonZero(disparity.rowRange(1, 3) == kInvalidDisparity), 6);
+  EXPECT_EQ(cv::countNonZero(disparity == kInvalidDisparity), 6);
+}
+
 TEST(LeftRightCheckTest, FollowsVerticalAndFractionalBaselines) {
   cv::Mat1f disparity(10, 10, kInvalidDisparity), swapped(10, 10, kInvalidDisparity);
   disparity(2, 4) = 6.0f;  // camera at (0, -0.5): matched pixel at y = 2 + 3 = 5
