@@ -67,20 +67,20 @@ void rejectInconsistentMatches(cv::Mat1f& disparity, const cv::Mat1f& swapped, c
   CV_Assert(disparity.size() == swapped.size());
   const int width = disparity.cols, height = disparity.rows;
   const cv::Range tested = rowsOf(rows, height);
-  const float bx = static_cast<float>(first.bx), by = static_cast<float>(first.by);
-  const float tolerance = static_cast<float>(max_difference);
   for (int y = tested.start; y < tested.end; ++y) {
     float* row = disparity.ptr<float>(y);
     for (int x = 0; x < width; ++x) {
-      // Branch-free: valid and invalid pixels are mixed at random, which a branch would mispredict.
-      // An invalid disparity (+inf) rounds to a position outside the image, and an invalid
-      // swapped disparity (+inf) fails the comparison.
+      // Branch-free: valid and invalid pixels are mixed at random, which a branch would mispredict
+      // (and std::lround is a library call). The matched pixel is rounded half up, as lround does
+      // for these coordinates; an invalid swapped disparity (+inf) fails the comparison.
       const float d = row[x];
-      const int xs = cvRound(static_cast<float>(x) - bx * d), ys = cvRound(static_cast<float>(y) - by * d);
-      const bool inside = static_cast<unsigned>(xs) < static_cast<unsigned>(width) &&
+      const bool valid = isValidDisparity(d);
+      const double shift = valid ? d : 0.0;
+      const int xs = cvFloor(x - first.bx * shift + 0.5), ys = cvFloor(y - first.by * shift + 0.5);
+      const bool inside = valid && static_cast<unsigned>(xs) < static_cast<unsigned>(width) &&
                           static_cast<unsigned>(ys) < static_cast<unsigned>(height);
       const float seen = swapped(inside ? ys : 0, inside ? xs : 0);
-      row[x] = inside && std::abs(seen - d) <= tolerance ? d : kInvalidDisparity;
+      row[x] = inside && std::abs(seen - d) <= max_difference ? d : kInvalidDisparity;
     }
   }
 }
