@@ -414,13 +414,15 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
       // buffer of their own; for the scanline, in the row's costs.
       Acc* const pixel_costs = scanline ? row_costs + static_cast<size_t>(x - region.x0) * count
                                         : (kCombine ? combined : group_scores);
+      // One group: the window slides from the previous pixel's scores, which the scanline keeps
+      // in the row's costs (so they are stored once).
+      const Acc* const sliding = scanline && !kCombine && x > region.x0 ? pixel_costs - count : group_scores;
       for (int chunk = 0; chunk < chunk_count; ++chunk) {
         const int b = chunk * Lanes::kCount;
         if constexpr (!kCombine) {
-          const Vec value = Lanes::slide(cv::vx_load(group_scores + b), cv::vx_load(all_sums + b + entering),
+          const Vec value = Lanes::slide(cv::vx_load(sliding + b), cv::vx_load(all_sums + b + entering),
                                          cv::vx_load(all_sums + b + leaving));
-          cv::v_store(group_scores + b, value);
-          if (scanline) cv::v_store(pixel_costs + b, value);
+          cv::v_store(pixel_costs + b, value);
         } else {
           for (int g = 0; g < groups; ++g) {
             Acc* const group_score = group_scores + g * count + b;
