@@ -221,14 +221,28 @@ void prepareFrame(const StereoFrame& frame, const StereoOptions& options, const 
   const auto prefilter = [&](const cv::Mat1b& image, cv::Mat1b& filtered) {
     prefilterImage(image, options.prefilter, options.prefilter_cap, options.texture_sigma, filtered);
   };
-  prefilter(frame.reference, prepared.filtered_reference);
-  cv::copyMakeBorder(prepared.filtered_reference, prepared.reference, prepared.margin, prepared.margin,
-                     prepared.margin, prepared.margin, cv::BORDER_REPLICATE);
   prepared.sources.resize(frame.secondaries.size());
-  for (size_t c = 0; c < frame.secondaries.size(); ++c) {
-    CandidateSource& source = prepared.sources[c];
-    prefilter(frame.secondaries[c].image, source.filtered);
-    prepareCandidateSource(source.filtered, frame.secondaries[c].camera, prepared, source);
+  // View 0 is the reference, view c + 1 secondary camera c; each writes only its own images, so
+  // with several threads they are prepared in parallel (done on one, this would cap what a
+  // second thread gains on small images).
+  const auto prepareViews = [&](const cv::Range& views) {
+    for (int view = views.start; view < views.end; ++view) {
+      if (view == 0) {
+        prefilter(frame.reference, prepared.filtered_reference);
+        cv::copyMakeBorder(prepared.filtered_reference, prepared.reference, prepared.margin, prepared.margin,
+                           prepared.margin, prepared.margin, cv::BORDER_REPLICATE);
+        continue;
+      }
+      CandidateSource& source = prepared.sources[view - 1];
+      prefilter(frame.secondaries[view - 1].image, source.filtered);
+      prepareCandidateSource(source.filtered, frame.secondaries[view - 1].camera, prepared, source);
+    }
+  };
+  const int views = static_cast<int>(frame.secondaries.size()) + 1;
+  if (options.threads == 1) {
+    prepareViews(cv::Range(0, views));
+  } else {
+    cv::parallel_for_(cv::Range(0, views), prepareViews, std::min(options.threads, views));
   }
 }
 
