@@ -416,13 +416,16 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
                                         : (kCombine ? combined : group_scores);
       // One group: the window slides from the previous pixel's scores, which the scanline keeps
       // in the row's costs (so they are stored once).
-      const Acc* const sliding = scanline && !kCombine && x > region.x0 ? pixel_costs - count : group_scores;
+      const Acc* const sliding = x > region.x0 ? pixel_costs - count : group_scores;
       for (int chunk = 0; chunk < chunk_count; ++chunk) {
         const int b = chunk * Lanes::kCount;
         if constexpr (!kCombine) {
-          const Vec value = Lanes::slide(cv::vx_load(sliding + b), cv::vx_load(all_sums + b + entering),
-                                         cv::vx_load(all_sums + b + leaving));
-          cv::v_store(pixel_costs + b, value);
+          const Vec entering_sums = cv::vx_load(all_sums + b + entering), leaving_sums = cv::vx_load(all_sums + b + leaving);
+          if (scanline) {
+            cv::v_store(pixel_costs + b, Lanes::slide(cv::vx_load(sliding + b), entering_sums, leaving_sums));
+          } else {
+            cv::v_store(group_scores + b, Lanes::slide(cv::vx_load(group_scores + b), entering_sums, leaving_sums));
+          }
         } else {
           for (int g = 0; g < groups; ++g) {
             Acc* const group_score = group_scores + g * count + b;
