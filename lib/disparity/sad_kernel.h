@@ -72,7 +72,6 @@ struct MatchRegion {
 // 16-bit scores (when the largest possible score fits) or 32-bit ones. Candidate disparities are
 // padded to a multiple of byte_lanes, the candidates of one 8-bit vector.
 struct SadKernel {
-  SimdLevel level;
   int byte_lanes;
   void (*match_narrow)(const PreparedFrame& frame, const MatchRegion& region, SadMatch& out);
   void (*match_wide)(const PreparedFrame& frame, const MatchRegion& region, SadMatch& out);

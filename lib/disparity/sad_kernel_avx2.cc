@@ -48,7 +48,7 @@
 namespace stereonav {
 
 const SadKernel& avx2SadKernel() {
-  static const SadKernel kernel = avx2::makeSadKernel(SimdLevel::kAvx2);
+  static const SadKernel kernel = avx2::makeSadKernel();
   return kernel;
 }
 

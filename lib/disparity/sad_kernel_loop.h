@@ -500,9 +500,7 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
 }
 
 // This build's kernel.
-inline SadKernel makeSadKernel(SimdLevel level) {
-  return SadKernel{level, kByteLanes, &matchRegion<int16_t>, &matchRegion<int32_t>};
-}
+inline SadKernel makeSadKernel() { return SadKernel{kByteLanes, &matchRegion<int16_t>, &matchRegion<int32_t>}; }
 
 }  // namespace STEREONAV_SAD_KERNEL_NAMESPACE
 }  // namespace stereonav

@@ -8,7 +8,7 @@
 namespace stereonav {
 
 const SadKernel& sse2SadKernel() {
-  static const SadKernel kernel = sse2::makeSadKernel(SimdLevel::kSse2);
+  static const SadKernel kernel = sse2::makeSadKernel();
   return kernel;
 }
 

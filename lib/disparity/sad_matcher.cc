@@ -31,7 +31,6 @@ namespace {
 
 int roundUp(int value, int multiple) { return (value + multiple - 1) / multiple * multiple; }
 
-
 // A sample offset split as the bilinear taps use it: whole pixels and a fraction in 1/256.
 void splitOffset(double offset, int& whole, int& weight) {
   whole = static_cast<int>(std::floor(offset));
@@ -182,7 +181,6 @@ std::vector<MatchRegion> matchRegions(const StereoFrame& frame, int min_d, int m
   }
   return regions;
 }
-
 
 }  // namespace
 
