@@ -80,7 +80,8 @@ struct SadKernel {
 const SadKernel& sse2SadKernel();
 const SadKernel& avx2SadKernel();  // call only where the CPU has AVX2 (simdSupported)
 
-// The kernel of `level`; kAuto is the widest the CPU runs. Throws ConfigError if the CPU lacks it.
+// The kernel of `level`, which the CPU must run (validateStereoOptions checks it); kAuto is the
+// widest the CPU runs.
 const SadKernel& sadKernel(SimdLevel level);
 
 }  // namespace stereonav

@@ -185,9 +185,6 @@ std::vector<MatchRegion> matchRegions(const StereoFrame& frame, int min_d, int m
 }  // namespace
 
 const SadKernel& sadKernel(SimdLevel level) {
-  if (!simdSupported(level)) {
-    throw ConfigError(std::string("[stereo] simd: ") + toString(level) + " is not supported by this CPU");
-  }
   if (level == SimdLevel::kAuto) level = simdSupported(SimdLevel::kAvx2) ? SimdLevel::kAvx2 : SimdLevel::kSse2;
   return level == SimdLevel::kAvx2 ? avx2SadKernel() : sse2SadKernel();
 }
@@ -301,7 +298,7 @@ const SadMatch& SadMatcher::match(const StereoFrame& frame) {
 
   const int height = frame.reference.rows;
   const long long largest_score = static_cast<long long>(options.window) * options.window *
-                                  maxPrefilteredDifference(options.prefilter, options.prefilter_cap) *
+                                  prepared.max_difference *
                                   static_cast<long long>(frame.secondaries.size());
   // With the scanline, a score is the sum of two paths, each at most the largest window score plus
   // the large-jump cost.
