@@ -54,7 +54,8 @@ struct PreparedFrame {
   bool subpixel = false;
   bool second_best = false;  // find the runner-up score (SadMatch::second_score)
   bool sum_scores = true;    // add up all candidates' scores (SadMatch::score_sum)
-  bool scanline = false;     // CostAggregation::kScanline, with its jump costs per window pixel and camera
+  bool scanline = false;     // the horizontal paths, with their jump costs per window pixel and camera
+  bool paths_from_above = false;  // CostAggregation::kSemiGlobal: also the three paths from the row above
   double scanline_p1 = 0, scanline_p2 = 0;
   // Binocular horizontal rig with the left-right check: +1 if candidate d of pixel x is pixel
   // x - d of the secondary image, -1 if x + d; 0 = no reverse match (SadMatch::reverse_disparity).

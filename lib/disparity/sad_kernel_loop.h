@@ -168,6 +168,18 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
   Acc* const forward_paths = scratch(forward_path_buffer, row_pixels * path_stride);
   Acc* const backward_paths = scratch(backward_path_buffer, 2 * path_stride);
   uchar* const tables = scratch(table_buffer, cameras * row_size);
+  // Semi-global: the paths that come down from the row above (from the upper left, above and the
+  // upper right) to every pixel of this row and of the previous one, and each path's lowest entry.
+  constexpr int kDirectionsFromAbove = 3;
+  const bool from_above = frame.paths_from_above;
+  const size_t above_pixels = from_above ? row_pixels : 0;
+  thread_local std::vector<Acc> above_path_buffer, above_lowest_buffer;
+  Acc* const above_paths = scratch(above_path_buffer, 2 * kDirectionsFromAbove * above_pixels * path_stride);
+  Acc* const above_lowest = scratch(above_lowest_buffer, 2 * kDirectionsFromAbove * above_pixels);
+  // Index of pixel i's path from `direction` (0: upper left, 1: above, 2: upper right) in row y.
+  const auto aboveIndex = [&](int y, int direction, size_t i) {
+    return (static_cast<size_t>(y % 2) * kDirectionsFromAbove + direction) * above_pixels + i;
+  };
 
   const int chunks = padded / Lanes::kCount;
   const int whole_chunks = disparities / Lanes::kCount;  // chunks without padding lanes
@@ -452,6 +464,15 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
         const size_t i = static_cast<size_t>(x - region.x0);
         forward_lowest = followPath(pixel_costs, i == 0 ? nullptr : forward_paths + (i - 1) * path_stride,
                                     forward_lowest, forward_paths + i * path_stride);
+        for (int direction = 0; direction < kDirectionsFromAbove && from_above; ++direction) {
+          const ptrdiff_t from = static_cast<ptrdiff_t>(i) + direction - 1;
+          const bool starts = y == region.y0 || from < 0 || from >= static_cast<ptrdiff_t>(row_pixels);
+          const size_t previous = starts ? 0 : aboveIndex(y - 1, direction, static_cast<size_t>(from));
+          const size_t current = aboveIndex(y, direction, i);
+          above_lowest[current] = cv::v_extract_n<0>(followPath(
+              pixel_costs, starts ? nullptr : above_paths + previous * path_stride,
+              Lanes::all(starts ? 0 : above_lowest[previous]), above_paths + current * path_stride));
+        }
       }
     }
     if (!scanline) return;
@@ -467,8 +488,11 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
       const Acc* const forward = forward_paths + i * path_stride;
       for (int chunk = 0; chunk < chunk_count; ++chunk) {
         const int b = chunk * Lanes::kCount;
-        const Vec sum = Lanes::add(cv::vx_load(forward + b), cv::vx_load(path + b));
-        // Padding lanes (the largest score twice, wrapped) become zero; decide() pads them again.
+        Vec sum = Lanes::add(cv::vx_load(forward + b), cv::vx_load(path + b));
+        for (int direction = 0; direction < kDirectionsFromAbove && from_above; ++direction) {
+          sum = Lanes::add(sum, cv::vx_load(above_paths + aboveIndex(y, direction, i) * path_stride + b));
+        }
+        // Padding lanes (the largest score, added up and wrapped) become zero; decide() pads them again.
         cv::v_store(combined + b, chunk < unpadded_chunks ? sum : sum & real_lanes[chunk - unpadded_chunks]);
       }
       decide(y, x, combined, true);

@@ -210,7 +210,8 @@ void prepareFrame(const StereoFrame& frame, const StereoOptions& options, const 
   prepared.subpixel = options.subpixel;
   prepared.second_best = options.second_best_ratio < 1.0;
   prepared.sum_scores = options.uniqueness_threshold < 1.0;
-  prepared.scanline = options.aggregation == CostAggregation::kScanline;
+  prepared.scanline = options.aggregation != CostAggregation::kWindow;
+  prepared.paths_from_above = options.aggregation == CostAggregation::kSemiGlobal;
   prepared.scanline_p1 = options.scanline_p1;
   prepared.scanline_p2 = options.scanline_p2;
   const auto prefilter = [&](const cv::Mat1b& image, cv::Mat1b& filtered) {
@@ -300,15 +301,16 @@ const SadMatch& SadMatcher::match(const StereoFrame& frame) {
   const long long largest_score = static_cast<long long>(options.window) * options.window *
                                   prepared.max_difference *
                                   static_cast<long long>(frame.secondaries.size());
-  // With the scanline, a score is the sum of two paths, each at most the largest window score plus
-  // the large-jump cost.
+  // With paths, a score is the sum of two (scanline) or five (semi-global) paths, each at most the
+  // largest window score plus the large-jump cost.
+  const int paths = prepared.paths_from_above ? 5 : prepared.scanline ? 2 : 0;
   const long long largest_total =
-      options.aggregation == CostAggregation::kScanline
-          ? 2 * (largest_score + static_cast<long long>(std::ceil(options.scanline_p2 * options.window *
-                                                                    options.window * frame.secondaries.size())))
-          : largest_score;
+      paths ? paths * (largest_score + static_cast<long long>(std::ceil(options.scanline_p2 * options.window *
+                                                                         options.window * frame.secondaries.size())))
+            : largest_score;
   const bool narrow = largest_total <= std::numeric_limits<int16_t>::max();
-  const int stripes = std::min(options.threads, height);
+  // Paths from the row above run down the whole image: stripes would cut them.
+  const int stripes = prepared.paths_from_above ? 1 : std::min(options.threads, height);
   const auto matchStripes = [&](const cv::Range& range) {
     for (int stripe = range.start; stripe < range.end; ++stripe) {
       const int top = height * stripe / stripes, bottom = height * (stripe + 1) / stripes;

@@ -24,7 +24,8 @@ const std::map<std::string, Prefilter> kPrefilterNames{
 const std::map<std::string, CameraCombination> kCombinationNames{
     {"sum", CameraCombination::kSum}, {"best_half", CameraCombination::kBestHalf}};
 const std::map<std::string, CostAggregation> kAggregationNames{
-    {"window", CostAggregation::kWindow}, {"scanline", CostAggregation::kScanline}};
+    {"window", CostAggregation::kWindow}, {"scanline", CostAggregation::kScanline},
+    {"semiglobal", CostAggregation::kSemiGlobal}};
 const std::map<std::string, SimdLevel> kSimdNames{
     {"auto", SimdLevel::kAuto}, {"sse2", SimdLevel::kSse2}, {"avx2", SimdLevel::kAvx2}};
 

@@ -28,8 +28,11 @@ enum class CameraCombination { kSum, kBestHalf };
 // Hirschmuller's semi-global matching, from the left and from the right): a jump of one disparity
 // costs scanline_p1, a larger jump scanline_p2. A surface then keeps its disparity across pixels
 // whose own windows are ambiguous, and a window straddling a depth edge no longer drags the
-// background to the foreground's disparity.
-enum class CostAggregation { kWindow, kScanline };
+// background to the foreground's disparity. kSemiGlobal adds the three paths that come down from
+// the row above (from the upper left, above and the upper right): five of Hirschmuller's paths,
+// as OpenCV's StereoSGBM in its default mode, so a surface also keeps its disparity from row to
+// row. Its paths run down the whole image, so the rows are matched on one thread.
+enum class CostAggregation { kWindow, kScanline, kSemiGlobal };
 
 // The instruction set of the SAD engine's vector loop. kAuto takes the widest this CPU runs
 // (AVX2's 256-bit vectors compare twice the candidates per instruction of SSE2's 128-bit ones);
@@ -52,7 +55,7 @@ struct StereoOptions {
   CameraCombination combination = CameraCombination::kSum;
 
   CostAggregation aggregation = CostAggregation::kWindow;
-  // Jump costs of kScanline per pixel of the window and per camera, in prefiltered grey levels
+  // Jump costs of kScanline and kSemiGlobal per pixel of the window and per camera, in prefiltered grey levels
   // (a score is a sum over window pixels and cameras, so the costs scale with both and one value
   // suits any window, rig and number of disparities). scanline_p2 >= scanline_p1.
   double scanline_p1 = 4;
@@ -90,7 +93,7 @@ struct StereoOptions {
 
 // Loads and validates the [stereo] section; throws ConfigError "[stereo] key: why". Keys are the
 // member names above; enums as text: backend = sad | bm | sgbm, prefilter = none | xsobel | log,
-// combination = sum | best_half, aggregation = window | scanline, simd = auto | sse2 | avx2.
+// combination = sum | best_half, aggregation = window | scanline | semiglobal, simd = auto | sse2 | avx2.
 StereoOptions loadStereoOptions(IniSection& section);
 
 // Bounds on the disparity range and the SAD window, pixels.

@@ -340,86 +340,112 @@ TEST(SadMatcherTest, CalibrationRoundingOffAUnitBaselineMatchesTheUnitBaseline) 
   EXPECT_EQ(cv::norm(a.score_sum(interior), b.score_sum(interior), cv::NORM_INF), 0.0);
 }
 
-// The scanline aggregation computed the slow way along row y, over reference columns [x0, x1) (one
-// match region): the window SAD of every candidate (borders replicated, as the engine pads), the
-// paths from the left and from the right (Hirschmuller 2008, eq. 13, restarting at the region's
-// ends), and their sum; then the lowest sum, its smallest disparity and the runner-up.
-// `totals`, if given, receives the aggregated score of every column and candidate.
-std::vector<BruteForce> bruteForceScanline(const std::vector<cv::Mat1b>& images, const std::vector<SecondaryCamera>& cameras,
-                                           const StereoOptions& options, int y, int x0, int x1,
-                                           std::vector<std::vector<long long>>* totals = nullptr) {
-  const int candidates = options.disparityCount();
-  const int columns = x1 - x0;
-  std::vector<std::vector<long long>> cost(columns, std::vector<long long>(candidates, 0));
-  for (int i = 0; i < columns; ++i) {
-    for (int j = 0; j < candidates; ++j) {
-      for (size_t c = 0; c < cameras.size(); ++c) {
-        cost[i][j] += windowSad(images, cameras, c, options.window, x0 + i, y, options.min_disparity + j);
-      }
-    }
+// One step of a path (Hirschmuller 2008, eq. 13): the pixel's cost plus the cheapest way to reach
+// each candidate from the path at the neighbour before it, less that path's lowest entry; without
+// a neighbour (`previous` null) the path starts at the pixel.
+std::vector<long long> pathStep(const std::vector<long long>& cost, const std::vector<long long>* previous,
+                                long long p1, long long p2) {
+  if (!previous) return cost;
+  const long long lowest = *std::min_element(previous->begin(), previous->end());
+  const int candidates = static_cast<int>(cost.size());
+  std::vector<long long> result(candidates);
+  for (int j = 0; j < candidates; ++j) {
+    long long reach = std::min((*previous)[j], lowest + p2);
+    if (j > 0) reach = std::min(reach, (*previous)[j - 1] + p1);
+    if (j + 1 < candidates) reach = std::min(reach, (*previous)[j + 1] + p1);
+    result[j] = cost[j] + reach - lowest;
   }
-  const long long scale = static_cast<long long>(options.window) * options.window * static_cast<long long>(cameras.size());
-  const long long p1 = std::llround(options.scanline_p1 * scale), p2 = std::llround(options.scanline_p2 * scale);
-  const auto path = [&](int direction) {
-    std::vector<std::vector<long long>> result(columns);
-    for (int step = 0; step < columns; ++step) {
-      const int i = direction > 0 ? step : columns - 1 - step;
-      if (step == 0) {
-        result[i] = cost[i];
-        continue;
-      }
-      const std::vector<long long>& previous = result[i - direction];
-      const long long lowest = *std::min_element(previous.begin(), previous.end());
-      result[i].resize(candidates);
-      for (int j = 0; j < candidates; ++j) {
-        long long reach = std::min(previous[j], lowest + p2);
-        if (j > 0) reach = std::min(reach, previous[j - 1] + p1);
-        if (j + 1 < candidates) reach = std::min(reach, previous[j + 1] + p1);
-        result[i][j] = cost[i][j] + reach - lowest;
-      }
-    }
-    return result;
-  };
-  const auto from_left = path(1), from_right = path(-1);
-  std::vector<BruteForce> results;
-  for (int i = 0; i < columns; ++i) {
-    BruteForce result{std::numeric_limits<int>::max(), 0, -1, std::numeric_limits<int>::max()};
-    std::vector<long long> total(candidates);
-    for (int j = 0; j < candidates; ++j) {
-      total[j] = from_left[i][j] + from_right[i][j];
-      result.score_sum += static_cast<int>(total[j]);
-      if (total[j] < result.best_score) {
-        result.best_score = static_cast<int>(total[j]);
-        result.best_disparity = options.min_disparity + j;
-      }
-    }
-    for (int j = 0; j < candidates; ++j) {
-      if (std::abs(options.min_disparity + j - result.best_disparity) > 1) {
-        result.second_score = std::min(result.second_score, static_cast<int>(total[j]));
-      }
-    }
-    results.push_back(result);
-    if (totals) totals->push_back(total);
-  }
-  return results;
+  return result;
 }
 
-void expectScanlineMatchesBruteForce(const std::vector<SecondaryCamera>& cameras, StereoOptions options, int x0,
-                                     int x1) {
+// The aggregated scores computed the slow way over reference columns [x0, x1) and every row (one
+// match region): the window SAD of every candidate (borders replicated, as the engine pads), the
+// paths from the left and from the right along each row and, for the semi-global aggregation, the
+// paths from the upper left, from above and from the upper right, each restarting at the region's
+// edges; their sum, as totals[y][x - x0][candidate].
+std::vector<std::vector<std::vector<long long>>> bruteForceAggregation(const std::vector<cv::Mat1b>& images,
+                                                                       const std::vector<SecondaryCamera>& cameras,
+                                                                       const StereoOptions& options, int x0, int x1) {
+  using Paths = std::vector<std::vector<long long>>;  // [column][candidate]
+  const int candidates = options.disparityCount();
+  const int columns = x1 - x0, rows = images[0].rows;
+  const long long scale = static_cast<long long>(options.window) * options.window * static_cast<long long>(cameras.size());
+  const long long p1 = std::llround(options.scanline_p1 * scale), p2 = std::llround(options.scanline_p2 * scale);
+  std::vector<Paths> totals(rows, Paths(columns, std::vector<long long>(candidates, 0)));
+  Paths from_above[3];  // the previous row's paths from the upper left, above and the upper right
+  for (int y = 0; y < rows; ++y) {
+    Paths cost(columns, std::vector<long long>(candidates, 0));
+    for (int i = 0; i < columns; ++i) {
+      for (int j = 0; j < candidates; ++j) {
+        for (size_t c = 0; c < cameras.size(); ++c) {
+          cost[i][j] += windowSad(images, cameras, c, options.window, x0 + i, y, options.min_disparity + j);
+        }
+      }
+    }
+    std::vector<Paths> paths;
+    for (const int direction : {1, -1}) {
+      Paths path(columns);
+      for (int step = 0; step < columns; ++step) {
+        const int i = direction > 0 ? step : columns - 1 - step;
+        path[i] = pathStep(cost[i], step == 0 ? nullptr : &path[i - direction], p1, p2);
+      }
+      paths.push_back(path);
+    }
+    if (options.aggregation == CostAggregation::kSemiGlobal) {
+      for (int direction = 0; direction < 3; ++direction) {
+        Paths path(columns);
+        for (int i = 0; i < columns; ++i) {
+          const int from = i + direction - 1;
+          const bool starts = y == 0 || from < 0 || from >= columns;
+          path[i] = pathStep(cost[i], starts ? nullptr : &from_above[direction][from], p1, p2);
+        }
+        paths.push_back(path);
+        from_above[direction] = path;
+      }
+    }
+    for (const Paths& path : paths) {
+      for (int i = 0; i < columns; ++i) {
+        for (int j = 0; j < candidates; ++j) totals[y][i][j] += path[i][j];
+      }
+    }
+  }
+  return totals;
+}
+
+// The winner-takes-all of one pixel's aggregated scores: the lowest, its smallest disparity, the
+// runner-up more than one disparity away and the sum.
+BruteForce decideBruteForce(const std::vector<long long>& total, const StereoOptions& options) {
+  BruteForce result{std::numeric_limits<int>::max(), 0, -1, std::numeric_limits<int>::max()};
+  const int candidates = static_cast<int>(total.size());
+  for (int j = 0; j < candidates; ++j) {
+    result.score_sum += static_cast<int>(total[j]);
+    if (total[j] < result.best_score) {
+      result.best_score = static_cast<int>(total[j]);
+      result.best_disparity = options.min_disparity + j;
+    }
+  }
+  for (int j = 0; j < candidates; ++j) {
+    if (std::abs(options.min_disparity + j - result.best_disparity) > 1) {
+      result.second_score = std::min(result.second_score, static_cast<int>(total[j]));
+    }
+  }
+  return result;
+}
+
+// `options.aggregation` (scanline or semi-global) against bruteForceAggregation.
+void expectPathsMatchBruteForce(const std::vector<SecondaryCamera>& cameras, StereoOptions options, int x0, int x1) {
   std::vector<cv::Mat1b> images;
   const StereoFrame frame = noiseFrame(cameras, cv::Size(70, 30), 23, images);
   options.prefilter = Prefilter::kNone;  // compare raw grey levels
-  options.aggregation = CostAggregation::kScanline;
   options.second_best_ratio = 0.9;      // so that the runner-up is found
   options.uniqueness_threshold = 0.5;   // and the sum of scores
   // One camera on the row: the left-right check reads the reverse match from the aggregated scores.
   options.left_right_check = cameras.size() == 1;
   const SadMatch match = SadMatcher(options).match(frame);
+  const auto totals = bruteForceAggregation(images, cameras, options, x0, x1);
   for (const int y : {0, 14, 29}) {
-    std::vector<std::vector<long long>> totals;
-    const std::vector<BruteForce> expected = bruteForceScanline(images, cameras, options, y, x0, x1, &totals);
     for (int x = x0; x < x1; ++x) {
-      const BruteForce& pixel = expected[x - x0];
+      const BruteForce pixel = decideBruteForce(totals[y][x - x0], options);
       ASSERT_EQ(match.best_score(y, x), pixel.best_score) << "(" << x << ", " << y << ")";
       ASSERT_EQ(match.disparity(y, x), pixel.best_disparity) << "(" << x << ", " << y << ")";
       ASSERT_EQ(match.second_score(y, x), pixel.second_score) << "(" << x << ", " << y << ")";
@@ -436,7 +462,7 @@ void expectScanlineMatchesBruteForce(const std::vector<SecondaryCamera>& cameras
       for (int d = options.min_disparity; d <= options.max_disparity; ++d) {
         const int x = s + bx * d;
         if (x < x0 || x >= x1) continue;
-        const long long total = totals[x - x0][d - options.min_disparity];
+        const long long total = totals[y][x - x0][d - options.min_disparity];
         if (total < lowest) {
           lowest = total;
           disparity = static_cast<float>(d);
@@ -455,8 +481,9 @@ TEST(SadMatcherTest, ScanlineEqualsThePathsComputedTheSlowWay) {
   options.max_disparity = 12;  // 13 candidates: the last vector is partly padding
   options.scanline_p1 = 2;
   options.scanline_p2 = 9;     // small enough for 16-bit scores
-  expectScanlineMatchesBruteForce({{1, 0}}, options, 12, 70);
-  expectScanlineMatchesBruteForce({{-1, 0}}, options, 0, 58);
+  options.aggregation = CostAggregation::kScanline;
+  expectPathsMatchBruteForce({{1, 0}}, options, 12, 70);
+  expectPathsMatchBruteForce({{-1, 0}}, options, 0, 58);
 }
 
 TEST(SadMatcherTest, ScanlineEqualsTheSlowWayWithWideScoresAndSeveralCameras) {
@@ -464,8 +491,23 @@ TEST(SadMatcherTest, ScanlineEqualsTheSlowWayWithWideScoresAndSeveralCameras) {
   options.min_disparity = 2;
   options.max_disparity = 20;  // 19 candidates
   options.window = 7;          // 2 * (49 * 255 * 2 + 32 * 49 * 2) > 32767: 32-bit scores
+  options.aggregation = CostAggregation::kScanline;
   // Columns where both cameras see every candidate: one region, its paths restart at its ends.
-  expectScanlineMatchesBruteForce({{1, 0}, {-1, 0}}, options, 20, 50);
+  expectPathsMatchBruteForce({{1, 0}, {-1, 0}}, options, 20, 50);
+}
+
+TEST(SadMatcherTest, SemiGlobalEqualsTheFivePathsComputedTheSlowWay) {
+  StereoOptions options = matchOptions();
+  options.window = 3;
+  options.max_disparity = 12;
+  options.scanline_p1 = 2;
+  options.scanline_p2 = 9;  // 5 * (9 * 255 + 9 * 9) fits 16-bit scores
+  options.aggregation = CostAggregation::kSemiGlobal;
+  options.threads = 3;      // the paths from above still run down the whole image
+  expectPathsMatchBruteForce({{1, 0}}, options, 12, 70);
+  expectPathsMatchBruteForce({{-1, 0}}, options, 0, 58);
+  options.window = 5;  // 5 * (25 * 255 + 9 * 25) > 32767: 32-bit scores
+  expectPathsMatchBruteForce({{1, 0}}, options, 12, 70);
 }
 
 // A flat band is ambiguous for a window inside it (every candidate that keeps the window in the
@@ -495,6 +537,35 @@ TEST(SadMatcherTest, ScanlineCarriesTheDisparityAcrossAFlatBand) {
   }
   EXPECT_EQ(window_correct, 0);
   EXPECT_EQ(scanline_correct, 30 * 16);
+}
+
+// A flat band across the whole image is ambiguous along its rows (every candidate scores 0 there,
+// and the paths along the rows stay flat), so the scanline takes the first disparity; the
+// semi-global paths from above carry the textured surface's disparity down into it.
+TEST(SadMatcherTest, SemiGlobalCarriesTheDisparityDownIntoAFlatBand) {
+  constexpr int kShift = 6;
+  cv::RNG rng(5);
+  cv::Mat1b scene(40, 140 + kShift);
+  rng.fill(scene, cv::RNG::UNIFORM, 0, 256);
+  scene.rowRange(15, 26).setTo(128);
+  const cv::Mat1b reference = scene.colRange(0, 140).clone(), secondary = scene.colRange(kShift, 140 + kShift).clone();
+  StereoOptions options = matchOptions();
+  options.window = 5;
+  options.left_right_check = false;
+  options.aggregation = CostAggregation::kScanline;
+  const StereoFrame frame{reference, {{secondary, {1, 0}}}};
+  const SadMatch scanline = SadMatcher(options).match(frame);
+  options.aggregation = CostAggregation::kSemiGlobal;
+  const SadMatch semi_global = SadMatcher(options).match(frame);
+  int scanline_correct = 0, semi_global_correct = 0;
+  for (int y = 18; y < 23; ++y) {  // windows inside the band, x-Sobel's 3x3 included
+    for (int x = 20; x < 120; ++x) {
+      scanline_correct += scanline.disparity(y, x) == kShift;
+      semi_global_correct += semi_global.disparity(y, x) == kShift;
+    }
+  }
+  EXPECT_EQ(scanline_correct, 0);
+  EXPECT_EQ(semi_global_correct, 5 * 100);
 }
 
 // Every output of two matches, pixel for pixel (invalid disparities compared as equal).
@@ -534,6 +605,8 @@ TEST(SadMatcherTest, Avx2GivesTheSameMatchAsSse2) {
        [](StereoOptions& o) { o.combination = CameraCombination::kBestHalf; }},
       {"wide scores, scanline", {{1, 0}, {0, 1}},
        [](StereoOptions& o) { o.window = 15, o.max_disparity = 10, o.aggregation = CostAggregation::kScanline; }},
+      {"semi-global, 41 candidates", {{1, 0}},
+       [](StereoOptions& o) { o.max_disparity = 40, o.aggregation = CostAggregation::kSemiGlobal; }},
       {"interpolated half baseline", {{0.5, 0}, {0, 0.5}}, [](StereoOptions& o) { o.max_disparity = 20; }},
       {"minimum disparity, threads", {{1, 0}},
        [](StereoOptions& o) { o.min_disparity = 5, o.max_disparity = 36, o.threads = 3; }},

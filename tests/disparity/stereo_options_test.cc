@@ -79,7 +79,7 @@ TEST(StereoOptionsTest, BadValuesNameTheKey) {
   EXPECT_NE(errorOf("second_best_ratio = 1.5\n").find("[stereo] second_best_ratio"), std::string::npos);
   EXPECT_NE(errorOf("texture_threshold = -1\n").find("[stereo] texture_threshold"), std::string::npos);
   EXPECT_NE(errorOf("prefilter_cap = 200\n").find("[stereo] prefilter_cap"), std::string::npos);
-  EXPECT_NE(errorOf("aggregation = sgm\n").find("[stereo] aggregation: expected scanline | window"), std::string::npos);
+  EXPECT_NE(errorOf("aggregation = sgm\n").find("[stereo] aggregation: expected scanline | semiglobal | window"), std::string::npos);
   EXPECT_NE(errorOf("scanline_p1 = -1\n").find("[stereo] scanline_p1"), std::string::npos);
   EXPECT_NE(errorOf("scanline_p1 = 10\nscanline_p2 = 5\n").find("[stereo] scanline_p2"), std::string::npos);
   EXPECT_NE(errorOf("scanline_p2 = 300\n").find("[stereo] scanline_p2"), std::string::npos);
