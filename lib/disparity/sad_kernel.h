@@ -72,10 +72,12 @@ struct MatchRegion {
 // One instruction set's build of the loop: it matches the reference pixels of a region, with
 // 16-bit scores (when the largest possible score fits) or 32-bit ones. Candidate disparities are
 // padded to a multiple of byte_lanes, the candidates of one 8-bit vector.
+// The semi-global paths from above are built separately: the other loops run as tight as
+// without them.
 struct SadKernel {
+  using Match = void (*)(const PreparedFrame& frame, const MatchRegion& region, SadMatch& out);
   int byte_lanes;
-  void (*match_narrow)(const PreparedFrame& frame, const MatchRegion& region, SadMatch& out);
-  void (*match_wide)(const PreparedFrame& frame, const MatchRegion& region, SadMatch& out);
+  Match match[2][2];  // [32-bit scores][paths from above]
 };
 
 const SadKernel& sse2SadKernel();

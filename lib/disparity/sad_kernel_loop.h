@@ -130,7 +130,7 @@ CV_ALWAYS_INLINE int firstLaneEqual(const Acc* scores, int chunks, const typenam
   return 0;
 }
 
-template <typename Acc>
+template <typename Acc, bool kPathsFromAbove>
 void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch& out) {
   using Lanes = AccumulatorLanes<Acc>;
   using Vec = typename Lanes::Vec;
@@ -171,7 +171,7 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
   // Semi-global: the paths that come down from the row above (from the upper left, above and the
   // upper right) to every pixel of this row and of the previous one, and each path's lowest entry.
   constexpr int kDirectionsFromAbove = 3;
-  const bool from_above = frame.paths_from_above;
+  constexpr bool from_above = kPathsFromAbove;
   const size_t above_pixels = from_above ? row_pixels : 0;
   thread_local std::vector<Acc> above_path_buffer, above_lowest_buffer;
   Acc* const above_paths = scratch(above_path_buffer, 2 * kDirectionsFromAbove * above_pixels * path_stride);
@@ -524,7 +524,11 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
 }
 
 // This build's kernel.
-inline SadKernel makeSadKernel() { return SadKernel{kByteLanes, &matchRegion<int16_t>, &matchRegion<int32_t>}; }
+inline SadKernel makeSadKernel() {
+  return SadKernel{kByteLanes,
+                   {{&matchRegion<int16_t, false>, &matchRegion<int16_t, true>},
+                    {&matchRegion<int32_t, false>, &matchRegion<int32_t, true>}}};
+}
 
 }  // namespace STEREONAV_SAD_KERNEL_NAMESPACE
 }  // namespace stereonav

@@ -318,7 +318,7 @@ const SadMatch& SadMatcher::match(const StereoFrame& frame) {
         region.y0 = std::max(region.y0, top);
         region.y1 = std::min(region.y1, bottom);
         if (region.y0 >= region.y1) continue;
-        (narrow ? kernel.match_narrow : kernel.match_wide)(prepared, region, match);
+        kernel.match[narrow ? 0 : 1][prepared.paths_from_above ? 1 : 0](prepared, region, match);
       }
     }
   };
