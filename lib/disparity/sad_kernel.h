@@ -28,9 +28,17 @@ struct BilinearTap {
 // once per frame so that increasing disparity runs forward in memory. Other cameras (fractional
 // or longer baselines) are interpolated into a per-row table; for them origin/x_step/y_step
 // address pixel (x, y) itself.
+//
+// With PixelCost::kBirchfieldTomasi the lowest and highest values within half a pixel of each
+// pixel along the baseline are arranged the same way, so the same address reads all three.
+struct ArrangedImage {
+  cv::Mat1b flipped, padded;  // the image flipped, then padded by the margin
+  cv::Mat1b buffer;           // `padded`, or its transpose or shear for vertical and diagonal cameras
+};
+
 struct CandidateSource {
-  cv::Mat1b filtered, flipped, padded;  // the prefiltered image, flipped, padded by the margin
-  cv::Mat1b buffer;  // `padded`, or its transpose or shear for vertical and diagonal cameras
+  cv::Mat1b filtered, filtered_low, filtered_high;  // the prefiltered image and its sampling interval
+  ArrangedImage values, low, high;
   ptrdiff_t origin = 0;
   ptrdiff_t x_step = 0;
   ptrdiff_t y_step = 0;
@@ -44,6 +52,10 @@ struct PreparedFrame {
   cv::Mat1b filtered_reference;
   cv::Mat1b reference;  // prefiltered, padded by margin
   std::vector<CandidateSource> sources;
+  // PixelCost::kBirchfieldTomasi: the reference's sampling interval along each camera's baseline,
+  // padded by margin (one pair per camera, as the cameras' baselines may point different ways).
+  bool birchfield_tomasi = false;
+  std::vector<cv::Mat1b> reference_low, reference_high;
   int margin = 0;
   int radius = 0;
   int min_disparity = 0;

@@ -167,7 +167,7 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
   Acc* const row_costs = scratch(row_cost_buffer, row_pixels * padded);
   Acc* const forward_paths = scratch(forward_path_buffer, row_pixels * path_stride);
   Acc* const backward_paths = scratch(backward_path_buffer, 2 * path_stride);
-  uchar* const tables = scratch(table_buffer, cameras * row_size);
+  uchar* const tables = scratch(table_buffer, (frame.birchfield_tomasi ? 3 : 1) * cameras * row_size);
   // Semi-global: the paths that come down from the row above (from the upper left, above and the
   // upper right) to every pixel of this row and of the previous one, and each path's lowest entry.
   constexpr int kDirectionsFromAbove = 3;
@@ -201,37 +201,41 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
     padding[chunk - whole_chunks] = cv::vx_load(pad);
   }
 
+  // Per camera: where row yy's candidates start and the step from pixel to pixel; for
+  // Birchfield-Tomasi also the candidates' sampling intervals (same addresses in their images) and
+  // the reference's along that camera's baseline.
   const uchar* candidates[kMaxCameras];
+  const uchar* candidate_lows[kMaxCameras];
+  const uchar* candidate_highs[kMaxCameras];
   ptrdiff_t candidate_x_step[kMaxCameras];
+  const uchar* reference_low_rows[kMaxCameras];
+  const uchar* reference_high_rows[kMaxCameras];
+  const bool birchfield_tomasi = frame.birchfield_tomasi;
+  const int images_per_camera = birchfield_tomasi ? 3 : 1;
 
-  // Absolute differences of reference row yy against every candidate, into the ring slot of
-  // row yy, updating the column sums by (entering row - leaving row).
-  const auto enterRow = [&](int yy) {
-    const int slot = (yy - (region.y0 - r)) % window;
-    const uchar* reference_row = frame.reference.ptr<uchar>(yy + margin) + margin;
-    for (int c = 0; c < cameras; ++c) {
-      const CandidateSource& source = frame.sources[region.cameras[c]];
-      const uchar* pixel_row = source.buffer.data + source.origin + yy * source.y_step;
-      if (!source.tabulated()) {
-        candidates[c] = pixel_row;
-        candidate_x_step[c] = source.x_step;
-        continue;
+  // The candidates of a tabulated camera along row yy, sampled from `image` (arranged as the
+  // camera's values), into `table`; returns where pixel 0's candidates would be.
+  const auto tabulate = [&](const CandidateSource& source, const cv::Mat1b& image, int yy, uchar* table) {
+    const uchar* pixel_row = image.data + source.origin + yy * source.y_step;
+    const ptrdiff_t step = static_cast<ptrdiff_t>(image.step);
+    for (int xe = 0; xe < nx; ++xe) {
+      const uchar* pixel = pixel_row + (x0 - r + xe);
+      uchar* entry = table + static_cast<size_t>(xe) * padded;
+      for (int j = 0; j < padded; ++j) {
+        const BilinearTap& tap = source.taps[j];
+        const uchar* q = pixel + tap.dy * step + tap.dx;
+        entry[j] = static_cast<uchar>(
+            (tap.w00 * q[0] + tap.w01 * q[1] + tap.w10 * q[step] + tap.w11 * q[step + 1] + (1 << 15)) >> 16);
       }
-      uchar* table = tables + c * row_size;
-      const ptrdiff_t step = static_cast<ptrdiff_t>(source.buffer.step);
-      for (int xe = 0; xe < nx; ++xe) {
-        const uchar* pixel = pixel_row + (x0 - r + xe);
-        uchar* entry = table + static_cast<size_t>(xe) * padded;
-        for (int j = 0; j < padded; ++j) {
-          const BilinearTap& tap = source.taps[j];
-          const uchar* q = pixel + tap.dy * step + tap.dx;
-          entry[j] = static_cast<uchar>(
-              (tap.w00 * q[0] + tap.w01 * q[1] + tap.w10 * q[step] + tap.w11 * q[step + 1] + (1 << 15)) >> 16);
-        }
-      }
-      candidates[c] = table - static_cast<ptrdiff_t>(x0 - r) * padded;
-      candidate_x_step[c] = padded;
     }
+    return table - static_cast<ptrdiff_t>(x0 - r) * padded;
+  };
+
+  // The pixel costs of reference row yy against every candidate, into the ring slot of the row,
+  // updating the column sums by (entering row - leaving row).
+  const auto enterGroups = [&](int yy, int slot, auto birchfield_tomasi_tag) {
+    constexpr bool kBirchfieldTomasi = decltype(birchfield_tomasi_tag)::value;
+    const uchar* reference_row = frame.reference.ptr<uchar>(yy + margin) + margin;
     for (int g = 0; g < groups; ++g) {
       const int first = groups == 1 ? 0 : g, last = groups == 1 ? cameras : g + 1;
       const bool byte_sums = (last - first) * frame.max_difference <= 255;
@@ -244,24 +248,45 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
       for (int xe = 0; xe < nx; ++xe) {
         const int x = x0 - r + xe;
         const cv::v_uint8 reference = cv::vx_setall_u8(reference_row[x]);
-        const uchar* const own_candidates = first_candidates + x * first_x_step;
+        cv::v_uint8 reference_low[kMaxCameras], reference_high[kMaxCameras];
+        if constexpr (kBirchfieldTomasi) {
+          for (int c = first; c < last; ++c) {
+            reference_low[c] = cv::vx_setall_u8(reference_low_rows[c][x]);
+            reference_high[c] = cv::vx_setall_u8(reference_high_rows[c][x]);
+          }
+        }
+        // Camera c's cost of the candidates at `offset` from `values`: the absolute difference, or
+        // the smaller of the two distances of a pixel to the other's sampling interval (u8
+        // subtraction saturates at 0, so the larger of the two signed gaps is the distance).
+        const auto pixelCost = [&](int c, const uchar* values, ptrdiff_t offset) __attribute__((always_inline)) {
+          const cv::v_uint8 candidate = cv::vx_load(values + offset);
+          if constexpr (kBirchfieldTomasi) {
+            const cv::v_uint8 to_candidate =
+                cv::v_max(reference - cv::vx_load(candidate_highs[c] + offset), cv::vx_load(candidate_lows[c] + offset) - reference);
+            const cv::v_uint8 to_reference = cv::v_max(candidate - reference_high[c], reference_low[c] - candidate);
+            return cv::v_min(to_candidate, to_reference);
+          } else {
+            return cv::v_absdiff(reference, candidate);
+          }
+        };
+        const ptrdiff_t own_offset = x * first_x_step;
         Acc* const slot_entry = ring_row + static_cast<size_t>(xe) * count;
         Acc* const sum_entry = sums + static_cast<size_t>(xe) * count;
         for (int b = 0; b < count; b += kByteLanes) {
           Vec entering[kVectorsPerBytes];
-          const cv::v_uint8 own = cv::v_absdiff(reference, cv::vx_load(own_candidates + b));
+          const cv::v_uint8 own = pixelCost(first, first_candidates, own_offset + b);
           if (byte_sums) {
-            // The differences of every camera of the group add up within a byte: widen once.
+            // The costs of every camera of the group add up within a byte: widen once.
             cv::v_uint8 total = own;
             for (int c = first + 1; c < last; ++c) {
-              total = cv::v_add_wrap(total, cv::v_absdiff(reference, cv::vx_load(candidates[c] + x * candidate_x_step[c] + b)));
+              total = cv::v_add_wrap(total, pixelCost(c, candidates[c], x * candidate_x_step[c] + b));
             }
             Lanes::widen(total, entering);
           } else {
             Lanes::widen(own, entering);
             for (int c = first + 1; c < last; ++c) {
               Vec more[kVectorsPerBytes];
-              Lanes::widen(cv::v_absdiff(reference, cv::vx_load(candidates[c] + x * candidate_x_step[c] + b)), more);
+              Lanes::widen(pixelCost(c, candidates[c], x * candidate_x_step[c] + b), more);
               for (int i = 0; i < kVectorsPerBytes; ++i) entering[i] = Lanes::add(entering[i], more[i]);
             }
           }
@@ -274,6 +299,40 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
           }
         }
       }
+    }
+  };
+
+  const auto enterRow = [&](int yy) {
+    for (int c = 0; c < cameras; ++c) {
+      const int camera = region.cameras[c];
+      const CandidateSource& source = frame.sources[camera];
+      if (birchfield_tomasi) {
+        reference_low_rows[c] = frame.reference_low[camera].ptr<uchar>(yy + margin) + margin;
+        reference_high_rows[c] = frame.reference_high[camera].ptr<uchar>(yy + margin) + margin;
+      }
+      if (!source.tabulated()) {
+        const ptrdiff_t row_offset = source.origin + yy * source.y_step;
+        candidates[c] = source.values.buffer.data + row_offset;
+        if (birchfield_tomasi) {
+          candidate_lows[c] = source.low.buffer.data + row_offset;
+          candidate_highs[c] = source.high.buffer.data + row_offset;
+        }
+        candidate_x_step[c] = source.x_step;
+        continue;
+      }
+      uchar* const camera_tables = tables + static_cast<size_t>(c * images_per_camera) * row_size;
+      candidates[c] = tabulate(source, source.values.buffer, yy, camera_tables);
+      if (birchfield_tomasi) {
+        candidate_lows[c] = tabulate(source, source.low.buffer, yy, camera_tables + row_size);
+        candidate_highs[c] = tabulate(source, source.high.buffer, yy, camera_tables + 2 * row_size);
+      }
+      candidate_x_step[c] = padded;
+    }
+    const int slot = (yy - (region.y0 - r)) % window;
+    if (birchfield_tomasi) {
+      enterGroups(yy, slot, std::true_type{});
+    } else {
+      enterGroups(yy, slot, std::false_type{});
     }
   };
 
@@ -397,8 +456,10 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
 
   // Horizontal running sum of the column sums gives every candidate's window score of each pixel
   // of row y; the winner is taken at once, or after the scanline paths over the whole row.
-  const auto matchRow = [&](int y, auto combine_groups) {
+  const auto matchRow = [&](int y, auto combine_groups, auto paths_from_above) {
     constexpr bool kCombine = decltype(combine_groups)::value;
+    // A constant, so that the scanline's loops stay as tight as without the paths from above.
+    constexpr bool kFromAbove = decltype(paths_from_above)::value;
     for (int g = 0; g < groups; ++g) {
       // The window of the first pixel minus its last column, which the first slide brings in.
       const Acc* sums = column_sums + g * column_stride;
@@ -464,7 +525,7 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
         const size_t i = static_cast<size_t>(x - region.x0);
         forward_lowest = followPath(pixel_costs, i == 0 ? nullptr : forward_paths + (i - 1) * path_stride,
                                     forward_lowest, forward_paths + i * path_stride);
-        for (int direction = 0; direction < kDirectionsFromAbove && from_above; ++direction) {
+        for (int direction = 0; direction < kDirectionsFromAbove && kFromAbove; ++direction) {
           const ptrdiff_t from = static_cast<ptrdiff_t>(i) + direction - 1;
           const bool starts = y == region.y0 || from < 0 || from >= static_cast<ptrdiff_t>(row_pixels);
           const size_t previous = starts ? 0 : aboveIndex(y - 1, direction, static_cast<size_t>(from));
@@ -489,7 +550,7 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
       for (int chunk = 0; chunk < chunk_count; ++chunk) {
         const int b = chunk * Lanes::kCount;
         Vec sum = Lanes::add(cv::vx_load(forward + b), cv::vx_load(path + b));
-        for (int direction = 0; direction < kDirectionsFromAbove && from_above; ++direction) {
+        for (int direction = 0; direction < kDirectionsFromAbove && kFromAbove; ++direction) {
           sum = Lanes::add(sum, cv::vx_load(above_paths + aboveIndex(y, direction, i) * path_stride + b));
         }
         // Padding lanes (the largest score, added up and wrapped) become zero; decide() pads them again.
@@ -515,9 +576,9 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
   for (int y = region.y0; y < region.y1; ++y) {
     enterRow(y + r);
     if (groups == 1) {
-      matchRow(y, std::false_type{});
+      from_above ? matchRow(y, std::false_type{}, std::true_type{}) : matchRow(y, std::false_type{}, std::false_type{});
     } else {
-      matchRow(y, std::true_type{});
+      from_above ? matchRow(y, std::true_type{}, std::true_type{}) : matchRow(y, std::true_type{}, std::false_type{});
     }
     writeReverse(y);
   }

@@ -68,10 +68,62 @@ void shear(const cv::Mat1b& image, cv::Mat1b& sheared) {
   }
 }
 
-// Fills `source` for one secondary camera, reusing its buffers when the frame size is unchanged.
-void prepareCandidateSource(const cv::Mat1b& image, const SecondaryCamera& camera, const PreparedFrame& frame,
-                            CandidateSource& source) {
-  const int width = image.cols, height = image.rows, margin = frame.margin;
+// Arranges `image` as CandidateSource describes for a direct camera of whole-pixel steps (sx, sy)
+// (candidate d of pixel (x, y) is (x - sx*d, y - sy*d)), or only pads it for a tabulated one.
+// Flipping the axes with a positive step makes the candidate (x' + |sx| d, y' + |sy| d) in the
+// flipped image, x' = width-1-x or x.
+void arrangeImage(const cv::Mat1b& image, int sx, int sy, int margin, ArrangedImage& arranged) {
+  cv::Mat1b oriented = image;
+  if (sx > 0 || sy > 0) {
+    cv::flip(image, arranged.flipped, sx > 0 && sy > 0 ? -1 : (sx > 0 ? 1 : 0));
+    oriented = arranged.flipped;
+  }
+  cv::copyMakeBorder(oriented, arranged.padded, margin, margin, margin, margin, cv::BORDER_REPLICATE);
+  if (sy == 0) {
+    arranged.buffer = arranged.padded;
+  } else if (sx == 0) {
+    cv::transpose(arranged.padded, arranged.buffer);
+  } else {
+    shear(arranged.padded, arranged.buffer);
+  }
+}
+
+// The sampling interval of Birchfield and Tomasi along the direction (dx, dy): for each pixel,
+// the lowest and highest of its value and the values halfway to its two neighbours along it
+// (borders replicated; halves rounded up).
+void samplingInterval(const cv::Mat1b& image, int dx, int dy, cv::Mat1b& low, cv::Mat1b& high) {
+  thread_local cv::Mat1b padded;
+  cv::copyMakeBorder(image, padded, 1, 1, 1, 1, cv::BORDER_REPLICATE);
+  low.create(image.size());
+  high.create(image.size());
+  const int width = image.cols;
+  for (int y = 0; y < image.rows; ++y) {
+    const uchar* row = padded.ptr<uchar>(y + 1) + 1;
+    const uchar* before = padded.ptr<uchar>(y + 1 - dy) + 1 - dx;
+    const uchar* after = padded.ptr<uchar>(y + 1 + dy) + 1 + dx;
+    uchar* low_row = low.ptr<uchar>(y);
+    uchar* high_row = high.ptr<uchar>(y);
+    // Plain loops: the compiler turns the rounded halves into byte averages (pavgb).
+    for (int x = 0; x < width; ++x) {
+      const int value = row[x];
+      const int half_before = (value + before[x] + 1) >> 1, half_after = (value + after[x] + 1) >> 1;
+      low_row[x] = static_cast<uchar>(std::min({value, half_before, half_after}));
+      high_row[x] = static_cast<uchar>(std::max({value, half_before, half_after}));
+    }
+  }
+}
+
+// The direction along which a camera of baseline (bx, by) samples the candidates, in whole
+// pixels (one of the eight neighbours).
+cv::Point baselineDirection(const SecondaryCamera& camera) {
+  const double longest = std::max(std::abs(camera.bx), std::abs(camera.by));
+  return {static_cast<int>(std::lround(camera.bx / longest)), static_cast<int>(std::lround(camera.by / longest))};
+}
+
+// Fills `source` for one secondary camera from its prefiltered image (and, for Birchfield-Tomasi,
+// that image's sampling interval), reusing its buffers when the frame size is unchanged.
+void prepareCandidateSource(const SecondaryCamera& camera, const PreparedFrame& frame, CandidateSource& source) {
+  const int width = source.filtered.cols, height = source.filtered.rows, margin = frame.margin;
   const int min_d = frame.min_disparity, max_d = frame.min_disparity + frame.disparities - 1;
   int sx = 0, sy = 0;
   const bool direct = wholePixelStep(camera.bx, min_d, max_d, sx) && wholePixelStep(camera.by, min_d, max_d, sy) &&
@@ -79,41 +131,31 @@ void prepareCandidateSource(const cv::Mat1b& image, const SecondaryCamera& camer
   source.taps.clear();
   source.step_x = direct ? sx : 0;
   source.step_y = direct ? sy : 0;
+  if (!direct) sx = sy = 0;  // tabulated: padded only
+  arrangeImage(source.filtered, sx, sy, margin, source.values);
+  if (frame.birchfield_tomasi) {
+    arrangeImage(source.filtered_low, sx, sy, margin, source.low);
+    arrangeImage(source.filtered_high, sx, sy, margin, source.high);
+  }
+  const ptrdiff_t step = static_cast<ptrdiff_t>(source.values.buffer.step);
   if (direct) {
-    // Candidate d of pixel (x, y) is (x - sx*d, y - sy*d). Flipping the axes with a positive
-    // step makes it (x' + |sx| d, y' + |sy| d) in the flipped image, x' = width-1-x or x.
-    cv::Mat1b arranged = image;
-    if (sx > 0 || sy > 0) {
-      cv::flip(image, source.flipped, sx > 0 && sy > 0 ? -1 : (sx > 0 ? 1 : 0));
-      arranged = source.flipped;
-    }
-    cv::copyMakeBorder(arranged, source.padded, margin, margin, margin, margin, cv::BORDER_REPLICATE);
     const ptrdiff_t x_sign = sx > 0 ? -1 : 1, y_sign = sy > 0 ? -1 : 1;
     const ptrdiff_t x_first = sx > 0 ? width - 1 : 0, y_first = sy > 0 ? height - 1 : 0;  // x', y' of pixel (0, 0)
     if (sy == 0) {  // padded row y'+m, column x'+m+d
-      source.buffer = source.padded;
-      const ptrdiff_t step = static_cast<ptrdiff_t>(source.buffer.step);
       source.origin = margin * step + margin + x_first + min_d;
       source.x_step = x_sign;
       source.y_step = step;
     } else if (sx == 0) {  // transposed row x+m, column y'+m+d
-      cv::transpose(source.padded, source.buffer);
-      const ptrdiff_t step = static_cast<ptrdiff_t>(source.buffer.step);
       source.origin = margin * step + margin + y_first + min_d;
       source.x_step = step;
       source.y_step = y_sign;
     } else {  // sheared row x'-y'+rows-1, column y'+m+d
-      shear(source.padded, source.buffer);
-      const ptrdiff_t step = static_cast<ptrdiff_t>(source.buffer.step);
-      source.origin = (x_first - y_first + source.padded.rows - 1) * step + margin + y_first + min_d;
+      source.origin = (x_first - y_first + source.values.padded.rows - 1) * step + margin + y_first + min_d;
       source.x_step = x_sign * step;
       source.y_step = y_sign * (1 - step);
     }
     return;
   }
-  cv::copyMakeBorder(image, source.padded, margin, margin, margin, margin, cv::BORDER_REPLICATE);
-  source.buffer = source.padded;
-  const ptrdiff_t step = static_cast<ptrdiff_t>(source.buffer.step);
   source.origin = margin * step + margin;
   source.x_step = 1;
   source.y_step = step;
@@ -210,6 +252,7 @@ void prepareFrame(const StereoFrame& frame, const StereoOptions& options, const 
   prepared.subpixel = options.subpixel;
   prepared.second_best = options.second_best_ratio < 1.0;
   prepared.sum_scores = options.uniqueness_threshold < 1.0;
+  prepared.birchfield_tomasi = options.pixel_cost == PixelCost::kBirchfieldTomasi;
   prepared.scanline = options.aggregation != CostAggregation::kWindow;
   prepared.paths_from_above = options.aggregation == CostAggregation::kSemiGlobal;
   prepared.scanline_p1 = options.scanline_p1;
@@ -217,21 +260,39 @@ void prepareFrame(const StereoFrame& frame, const StereoOptions& options, const 
   const auto prefilter = [&](const cv::Mat1b& image, cv::Mat1b& filtered) {
     prefilterImage(image, options.prefilter, options.prefilter_cap, options.texture_sigma, filtered);
   };
-  prepared.sources.resize(frame.secondaries.size());
+  const size_t cameras = frame.secondaries.size();
+  prepared.sources.resize(cameras);
+  prepared.reference_low.resize(prepared.birchfield_tomasi ? cameras : 0);
+  prepared.reference_high.resize(prepared.birchfield_tomasi ? cameras : 0);
+  const auto pad = [&](const cv::Mat1b& image, cv::Mat1b& padded) {
+    cv::copyMakeBorder(image, padded, prepared.margin, prepared.margin, prepared.margin, prepared.margin,
+                       cv::BORDER_REPLICATE);
+  };
   // View 0 is the reference, view c + 1 secondary camera c; each writes only its own images, so
   // with several threads they are prepared in parallel (done on one, this would cap what a
   // second thread gains on small images).
   const auto prepareViews = [&](const cv::Range& views) {
+    thread_local cv::Mat1b low, high;
     for (int view = views.start; view < views.end; ++view) {
       if (view == 0) {
         prefilter(frame.reference, prepared.filtered_reference);
-        cv::copyMakeBorder(prepared.filtered_reference, prepared.reference, prepared.margin, prepared.margin,
-                           prepared.margin, prepared.margin, cv::BORDER_REPLICATE);
+        pad(prepared.filtered_reference, prepared.reference);
+        for (size_t c = 0; c < prepared.reference_low.size(); ++c) {
+          const cv::Point direction = baselineDirection(frame.secondaries[c].camera);
+          samplingInterval(prepared.filtered_reference, direction.x, direction.y, low, high);
+          pad(low, prepared.reference_low[c]);
+          pad(high, prepared.reference_high[c]);
+        }
         continue;
       }
       CandidateSource& source = prepared.sources[view - 1];
+      const SecondaryCamera& camera = frame.secondaries[view - 1].camera;
       prefilter(frame.secondaries[view - 1].image, source.filtered);
-      prepareCandidateSource(source.filtered, frame.secondaries[view - 1].camera, prepared, source);
+      if (prepared.birchfield_tomasi) {
+        const cv::Point direction = baselineDirection(camera);
+        samplingInterval(source.filtered, direction.x, direction.y, source.filtered_low, source.filtered_high);
+      }
+      prepareCandidateSource(camera, prepared, source);
     }
   };
   const int views = static_cast<int>(frame.secondaries.size()) + 1;

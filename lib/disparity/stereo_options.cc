@@ -21,6 +21,8 @@ const std::map<std::string, StereoBackend> kBackendNames{
     {"sad", StereoBackend::kSad}, {"bm", StereoBackend::kOpenCvBm}, {"sgbm", StereoBackend::kOpenCvSgbm}};
 const std::map<std::string, Prefilter> kPrefilterNames{
     {"none", Prefilter::kNone}, {"xsobel", Prefilter::kXSobel}, {"log", Prefilter::kLog}};
+const std::map<std::string, PixelCost> kPixelCostNames{
+    {"absolute_difference", PixelCost::kAbsoluteDifference}, {"birchfield_tomasi", PixelCost::kBirchfieldTomasi}};
 const std::map<std::string, CameraCombination> kCombinationNames{
     {"sum", CameraCombination::kSum}, {"best_half", CameraCombination::kBestHalf}};
 const std::map<std::string, CostAggregation> kAggregationNames{
@@ -77,6 +79,8 @@ StereoOptions loadStereoOptions(IniSection& section) {
   options.prefilter = parseEnum(section.getString("prefilter", nameOf(options.prefilter, kPrefilterNames)),
                                 kPrefilterNames, prefix + "prefilter");
   options.prefilter_cap = section.getInt("prefilter_cap", options.prefilter_cap);
+  options.pixel_cost = parseEnum(section.getString("pixel_cost", nameOf(options.pixel_cost, kPixelCostNames)),
+                                 kPixelCostNames, prefix + "pixel_cost");
   options.combination =
       parseEnum(section.getString("combination", nameOf(options.combination, kCombinationNames)),
                 kCombinationNames, prefix + "combination");

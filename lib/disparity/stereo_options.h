@@ -16,6 +16,14 @@ enum class StereoBackend { kSad, kOpenCvBm, kOpenCvSgbm };
 // that raw SAD is sensitive to.
 enum class Prefilter { kNone, kXSobel, kLog };
 
+// How one reference pixel and one candidate pixel are compared before the window adds them up.
+// kAbsoluteDifference is the paper's SAD term. kBirchfieldTomasi (Birchfield and Tomasi 1998, as
+// cv::StereoSGBM's cost) compares each pixel with the range of values the other image takes within
+// half a pixel of the candidate along the baseline, and keeps the smaller of the two: a surface
+// sampled at a fractional offset, or an edge that falls between pixels, no longer looks like a
+// mismatch, which is where SAD errs at depth edges and on slanted textured surfaces.
+enum class PixelCost { kAbsoluteDifference, kBirchfieldTomasi };
+
 // How the window scores of several secondary cameras make one score per candidate disparity.
 // kSum is the paper's (section 2.2, after Okutomi and Kanade). kBestHalf keeps only the
 // ceil(N/2) lowest camera scores, so a point hidden from some cameras by an occluding edge is
@@ -51,6 +59,8 @@ struct StereoOptions {
 
   Prefilter prefilter = Prefilter::kXSobel;
   int prefilter_cap = 31;  // clip of the prefiltered image, 1..127
+
+  PixelCost pixel_cost = PixelCost::kAbsoluteDifference;
 
   CameraCombination combination = CameraCombination::kSum;
 
@@ -93,7 +103,7 @@ struct StereoOptions {
 
 // Loads and validates the [stereo] section; throws ConfigError "[stereo] key: why". Keys are the
 // member names above; enums as text: backend = sad | bm | sgbm, prefilter = none | xsobel | log,
-// combination = sum | best_half, aggregation = window | scanline | semiglobal, simd = auto | sse2 | avx2.
+// pixel_cost = absolute_difference | birchfield_tomasi, combination = sum | best_half, aggregation = window | scanline | semiglobal, simd = auto | sse2 | avx2.
 StereoOptions loadStereoOptions(IniSection& section);
 
 // Bounds on the disparity range and the SAD window, pixels.

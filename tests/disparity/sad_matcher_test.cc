@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 #include <vector>
 
 #include "disparity/prefilter.h"
@@ -113,20 +114,43 @@ TEST(SadMatcherTest, SubpixelRefinementRecoversFractionalDisparity) {
   EXPECT_LT(refined_error / pixels, 0.2);
 }
 
-// The plain SAD of camera c over the window at reference pixel (x, y) and disparity d; pixels off
-// the image repeat the nearest border pixel, as the engine pads its images.
-int windowSad(const std::vector<cv::Mat1b>& images, const std::vector<SecondaryCamera>& cameras, size_t c, int window,
-              int x, int y, int d) {
-  const auto pixel = [](const cv::Mat1b& image, int px, int py) {
+// The sampling interval of Birchfield and Tomasi at pixel (x, y) along (dx, dy): the lowest and
+// highest of its value and the values halfway (rounded up) to its two neighbours along it.
+std::pair<int, int> samplingInterval(const cv::Mat1b& image, int x, int y, int dx, int dy) {
+  const auto pixel = [&](int px, int py) {
     return static_cast<int>(image(std::clamp(py, 0, image.rows - 1), std::clamp(px, 0, image.cols - 1)));
   };
+  const int value = pixel(x, y);
+  const int before = (value + pixel(x - dx, y - dy) + 1) / 2, after = (value + pixel(x + dx, y + dy) + 1) / 2;
+  return {std::min({value, before, after}), std::max({value, before, after})};
+}
+
+// The SAD (or the sum of Birchfield-Tomasi costs) of camera c over the window at reference pixel
+// (x, y) and disparity d; pixels off the image repeat the nearest border pixel, as the engine pads
+// its images.
+int windowSad(const std::vector<cv::Mat1b>& images, const std::vector<SecondaryCamera>& cameras, size_t c, int window,
+              int x, int y, int d, PixelCost cost = PixelCost::kAbsoluteDifference) {
+  const auto clamped = [](const cv::Mat1b& image, int px, int py) {
+    return cv::Point(std::clamp(px, 0, image.cols - 1), std::clamp(py, 0, image.rows - 1));
+  };
+  const int bx = static_cast<int>(cameras[c].bx), by = static_cast<int>(cameras[c].by);
+  const int dx = (bx > 0) - (bx < 0), dy = (by > 0) - (by < 0);  // the baseline's direction
   const int r = window / 2;
   int sad = 0;
-  for (int dy = -r; dy <= r; ++dy) {
-    for (int dx = -r; dx <= r; ++dx) {
-      const int sx = x + dx - static_cast<int>(cameras[c].bx) * d;
-      const int sy = y + dy - static_cast<int>(cameras[c].by) * d;
-      sad += std::abs(pixel(images[0], x + dx, y + dy) - pixel(images[c + 1], sx, sy));
+  for (int wy = -r; wy <= r; ++wy) {
+    for (int wx = -r; wx <= r; ++wx) {
+      const cv::Point p = clamped(images[0], x + wx, y + wy);
+      const cv::Point q = clamped(images[c + 1], x + wx - bx * d, y + wy - by * d);
+      const int reference = images[0](p), candidate = images[c + 1](q);
+      if (cost == PixelCost::kAbsoluteDifference) {
+        sad += std::abs(reference - candidate);
+        continue;
+      }
+      const auto [reference_low, reference_high] = samplingInterval(images[0], p.x, p.y, dx, dy);
+      const auto [candidate_low, candidate_high] = samplingInterval(images[c + 1], q.x, q.y, dx, dy);
+      const int to_candidate = std::max({0, reference - candidate_high, candidate_low - reference});
+      const int to_reference = std::max({0, candidate - reference_high, reference_low - candidate});
+      sad += std::min(to_candidate, to_reference);
     }
   }
   return sad;
@@ -148,7 +172,7 @@ BruteForce bruteForce(const std::vector<cv::Mat1b>& images, const std::vector<Se
   for (int d = options.min_disparity; d <= options.max_disparity; ++d) {
     std::vector<int> per_camera;
     for (size_t c = 0; c < cameras.size(); ++c) {
-      per_camera.push_back(windowSad(images, cameras, c, options.window, x, y, d));
+      per_camera.push_back(windowSad(images, cameras, c, options.window, x, y, d, options.pixel_cost));
     }
     std::sort(per_camera.begin(), per_camera.end());
     const size_t kept = best_half ? (per_camera.size() + 1) / 2 : per_camera.size();
@@ -293,6 +317,57 @@ TEST(SadMatcherTest, MinimumDisparityOffsetsTheSearch) {
   expectMatchesBruteForce({{1, 0}}, options);
 }
 
+// Cameras on each axis and diagonal, interpolated ones (baselines of 2), byte sums of prefiltered
+// images, 32-bit scores and best half: the Birchfield-Tomasi costs the slow way.
+TEST(SadMatcherTest, BirchfieldTomasiScoresEqualTheSlowWay) {
+  StereoOptions options = matchOptions();
+  options.pixel_cost = PixelCost::kBirchfieldTomasi;
+  expectMatchesBruteForce({{1, 0}}, options);
+  expectMatchesBruteForce({{-1, 0}, {0, -1}, {0, 1}}, options, Prefilter::kXSobel);
+  expectMatchesBruteForce({{1, 1}, {-1, 1}, {1, -1}, {-1, -1}}, options);
+  options.combination = CameraCombination::kBestHalf;
+  expectMatchesBruteForce({{-2, 0}, {-1, 0}, {1, 0}, {2, 0}}, options);
+  options.combination = CameraCombination::kSum;
+  options.window = 15;
+  options.max_disparity = 10;
+  expectMatchesBruteForce({{1, 0}, {0, 1}}, options);
+}
+
+// A surface sampled half a pixel apart in the two images: between samples a piecewise-linear
+// image is exactly the average of its neighbours, so Birchfield-Tomasi finds no difference at the
+// true match, while SAD pays half the local slope at every pixel.
+TEST(SadMatcherTest, BirchfieldTomasiForgivesHalfPixelSampling) {
+  constexpr int kWidth = 120, kHeight = 30;
+  cv::RNG rng(8);
+  // A row of linear pieces, 6 to 11 pixels long, at twice the resolution.
+  std::vector<int> fine(2 * kWidth + 20);
+  int value = 128, slope = 0;
+  for (size_t i = 0; i < fine.size(); ++i) {
+    if (i % 2 == 0 && rng.uniform(0, 8) == 0) slope = rng.uniform(-6, 7);
+    value = std::clamp(value + slope, 0, 255);
+    if (value == 0 || value == 255) slope = -slope;
+    fine[i] = value;
+  }
+  cv::Mat1b reference(kHeight, kWidth), secondary(kHeight, kWidth);
+  for (int x = 0; x < kWidth; ++x) {
+    reference.col(x).setTo(fine[2 * x]);  // secondary(x - 4.5) = reference(x)
+    secondary.col(x).setTo(fine[2 * x + 9]);
+  }
+  StereoOptions options = matchOptions();
+  options.prefilter = Prefilter::kNone;
+  options.window = 5;
+  options.left_right_check = false;
+  const StereoFrame frame{reference, {{secondary, {1, 0}}}};
+  const SadMatch sad = SadMatcher(options).match(frame);
+  options.pixel_cost = PixelCost::kBirchfieldTomasi;
+  const SadMatch birchfield_tomasi = SadMatcher(options).match(frame);
+  const cv::Rect interior(20, 5, 90, 20);
+  const double sad_score = cv::mean(sad.best_score(interior))[0];
+  const double bt_score = cv::mean(birchfield_tomasi.best_score(interior))[0];
+  EXPECT_GT(sad_score, 10.0);
+  EXPECT_LT(bt_score, 0.25 * sad_score);
+}
+
 TEST(SadMatcherTest, BestHalfMatchesOccludedStripsThatTheSumGetsWrong) {
   // Left of the plane, a strip of background is hidden from the cameras on the right (bx > 0);
   // right of it, from those on the left. The cameras on the other side still see it.
@@ -378,7 +453,8 @@ std::vector<std::vector<std::vector<long long>>> bruteForceAggregation(const std
     for (int i = 0; i < columns; ++i) {
       for (int j = 0; j < candidates; ++j) {
         for (size_t c = 0; c < cameras.size(); ++c) {
-          cost[i][j] += windowSad(images, cameras, c, options.window, x0 + i, y, options.min_disparity + j);
+          cost[i][j] += windowSad(images, cameras, c, options.window, x0 + i, y, options.min_disparity + j,
+                                options.pixel_cost);
         }
       }
     }
@@ -510,6 +586,17 @@ TEST(SadMatcherTest, SemiGlobalEqualsTheFivePathsComputedTheSlowWay) {
   expectPathsMatchBruteForce({{1, 0}}, options, 12, 70);
 }
 
+TEST(SadMatcherTest, BirchfieldTomasiWithSemiGlobalPathsEqualsTheSlowWay) {
+  StereoOptions options = matchOptions();
+  options.window = 3;
+  options.max_disparity = 12;
+  options.scanline_p1 = 2;
+  options.scanline_p2 = 9;
+  options.pixel_cost = PixelCost::kBirchfieldTomasi;
+  options.aggregation = CostAggregation::kSemiGlobal;
+  expectPathsMatchBruteForce({{1, 0}}, options, 12, 70);
+}
+
 // A flat band is ambiguous for a window inside it (every candidate that keeps the window in the
 // band scores 0, and the first, disparity 0, wins); the scanline carries the textured surface's
 // disparity across it from both sides.
@@ -607,6 +694,12 @@ TEST(SadMatcherTest, Avx2GivesTheSameMatchAsSse2) {
        [](StereoOptions& o) { o.window = 15, o.max_disparity = 10, o.aggregation = CostAggregation::kScanline; }},
       {"semi-global, 41 candidates", {{1, 0}},
        [](StereoOptions& o) { o.max_disparity = 40, o.aggregation = CostAggregation::kSemiGlobal; }},
+      {"Birchfield-Tomasi, three cameras, best half", {{1, 0}, {-1, 0}, {0, 1}},
+       [](StereoOptions& o) { o.pixel_cost = PixelCost::kBirchfieldTomasi, o.combination = CameraCombination::kBestHalf; }},
+      {"Birchfield-Tomasi, semi-global, interpolated", {{0.5, 0}},
+       [](StereoOptions& o) {
+         o.pixel_cost = PixelCost::kBirchfieldTomasi, o.aggregation = CostAggregation::kSemiGlobal, o.max_disparity = 20;
+       }},
       {"interpolated half baseline", {{0.5, 0}, {0, 0.5}}, [](StereoOptions& o) { o.max_disparity = 20; }},
       {"minimum disparity, threads", {{1, 0}},
        [](StereoOptions& o) { o.min_disparity = 5, o.max_disparity = 36, o.threads = 3; }},

@@ -20,7 +20,7 @@ std::string errorOf(const std::string& text) {
 TEST(StereoOptionsTest, LoadsEveryKey) {
   const StereoOptions options = load(
       "backend = sgbm\nmin_disparity = 2\nmax_disparity = 47\nwindow = 9\nprefilter = log\nprefilter_cap = 20\n"
-      "combination = best_half\naggregation = scanline\nscanline_p1 = 3\nscanline_p2 = 40\ntexture_threshold = 1.5\ntexture_sigma = 2\nuniqueness_threshold = 0.03\n"
+      "pixel_cost = birchfield_tomasi\ncombination = best_half\naggregation = semiglobal\nscanline_p1 = 3\nscanline_p2 = 40\ntexture_threshold = 1.5\ntexture_sigma = 2\nuniqueness_threshold = 0.03\n"
       "second_best_ratio = 0.85\nleft_right_check = false\nleft_right_max_diff = 2\nsubpixel = true\nthreads = 4\nsimd = sse2\n"
       "opencv_texture_threshold = 5\nopencv_uniqueness_ratio = 10\nopencv_speckle_window = 100\n"
       "opencv_speckle_range = 2\n");
@@ -31,8 +31,9 @@ TEST(StereoOptionsTest, LoadsEveryKey) {
   EXPECT_EQ(options.window, 9);
   EXPECT_EQ(options.prefilter, Prefilter::kLog);
   EXPECT_EQ(options.prefilter_cap, 20);
+  EXPECT_EQ(options.pixel_cost, PixelCost::kBirchfieldTomasi);
   EXPECT_EQ(options.combination, CameraCombination::kBestHalf);
-  EXPECT_EQ(options.aggregation, CostAggregation::kScanline);
+  EXPECT_EQ(options.aggregation, CostAggregation::kSemiGlobal);
   EXPECT_DOUBLE_EQ(options.scanline_p1, 3.0);
   EXPECT_DOUBLE_EQ(options.scanline_p2, 40.0);
   EXPECT_DOUBLE_EQ(options.texture_threshold, 1.5);
@@ -80,6 +81,8 @@ TEST(StereoOptionsTest, BadValuesNameTheKey) {
   EXPECT_NE(errorOf("texture_threshold = -1\n").find("[stereo] texture_threshold"), std::string::npos);
   EXPECT_NE(errorOf("prefilter_cap = 200\n").find("[stereo] prefilter_cap"), std::string::npos);
   EXPECT_NE(errorOf("aggregation = sgm\n").find("[stereo] aggregation: expected scanline | semiglobal | window"), std::string::npos);
+  EXPECT_NE(errorOf("pixel_cost = census\n").find("[stereo] pixel_cost: expected absolute_difference | birchfield_tomasi"),
+            std::string::npos);
   EXPECT_NE(errorOf("scanline_p1 = -1\n").find("[stereo] scanline_p1"), std::string::npos);
   EXPECT_NE(errorOf("scanline_p1 = 10\nscanline_p2 = 5\n").find("[stereo] scanline_p2"), std::string::npos);
   EXPECT_NE(errorOf("scanline_p2 = 300\n").find("[stereo] scanline_p2"), std::string::npos);
