@@ -456,10 +456,8 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
 
   // Horizontal running sum of the column sums gives every candidate's window score of each pixel
   // of row y; the winner is taken at once, or after the scanline paths over the whole row.
-  const auto matchRow = [&](int y, auto combine_groups, auto paths_from_above) {
+  const auto matchRow = [&](int y, auto combine_groups) {
     constexpr bool kCombine = decltype(combine_groups)::value;
-    // A constant, so that the scanline's loops stay as tight as without the paths from above.
-    constexpr bool kFromAbove = decltype(paths_from_above)::value;
     for (int g = 0; g < groups; ++g) {
       // The window of the first pixel minus its last column, which the first slide brings in.
       const Acc* sums = column_sums + g * column_stride;
@@ -525,7 +523,7 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
         const size_t i = static_cast<size_t>(x - region.x0);
         forward_lowest = followPath(pixel_costs, i == 0 ? nullptr : forward_paths + (i - 1) * path_stride,
                                     forward_lowest, forward_paths + i * path_stride);
-        for (int direction = 0; direction < kDirectionsFromAbove && kFromAbove; ++direction) {
+        for (int direction = 0; direction < kDirectionsFromAbove && from_above; ++direction) {
           const ptrdiff_t from = static_cast<ptrdiff_t>(i) + direction - 1;
           const bool starts = y == region.y0 || from < 0 || from >= static_cast<ptrdiff_t>(row_pixels);
           const size_t previous = starts ? 0 : aboveIndex(y - 1, direction, static_cast<size_t>(from));
@@ -550,7 +548,7 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
       for (int chunk = 0; chunk < chunk_count; ++chunk) {
         const int b = chunk * Lanes::kCount;
         Vec sum = Lanes::add(cv::vx_load(forward + b), cv::vx_load(path + b));
-        for (int direction = 0; direction < kDirectionsFromAbove && kFromAbove; ++direction) {
+        for (int direction = 0; direction < kDirectionsFromAbove && from_above; ++direction) {
           sum = Lanes::add(sum, cv::vx_load(above_paths + aboveIndex(y, direction, i) * path_stride + b));
         }
         // Padding lanes (the largest score, added up and wrapped) become zero; decide() pads them again.
@@ -576,9 +574,9 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
   for (int y = region.y0; y < region.y1; ++y) {
     enterRow(y + r);
     if (groups == 1) {
-      from_above ? matchRow(y, std::false_type{}, std::true_type{}) : matchRow(y, std::false_type{}, std::false_type{});
+      matchRow(y, std::false_type{});
     } else {
-      from_above ? matchRow(y, std::true_type{}, std::true_type{}) : matchRow(y, std::true_type{}, std::false_type{});
+      matchRow(y, std::true_type{});
     }
     writeReverse(y);
   }

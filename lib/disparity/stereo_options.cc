@@ -130,6 +130,12 @@ void validateStereoOptions(const StereoOptions& options, const std::string& sect
   if (!(options.scanline_p2 >= options.scanline_p1 && options.scanline_p2 <= 255)) {
     fail("scanline_p2", "must be in scanline_p1..255");
   }
+  // Five paths of at most 2 * 255 per window pixel and camera, for 16 cameras, fit 32 bits up to
+  // this window.
+  constexpr int kMaxSemiGlobalWindow = 229;
+  if (options.aggregation == CostAggregation::kSemiGlobal && options.window > kMaxSemiGlobalWindow) {
+    fail("window", "must be at most " + std::to_string(kMaxSemiGlobalWindow) + " with aggregation = semiglobal");
+  }
   if (!(options.texture_threshold >= 0)) fail("texture_threshold", "must be >= 0");
   if (!(options.texture_sigma > 0 && options.texture_sigma <= 100)) fail("texture_sigma", "must be in (0, 100]");
   if (!(options.uniqueness_threshold > 0)) fail("uniqueness_threshold", "must be positive");

@@ -83,6 +83,8 @@ TEST(StereoOptionsTest, BadValuesNameTheKey) {
   EXPECT_NE(errorOf("aggregation = sgm\n").find("[stereo] aggregation: expected scanline | semiglobal | window"), std::string::npos);
   EXPECT_NE(errorOf("pixel_cost = census\n").find("[stereo] pixel_cost: expected absolute_difference | birchfield_tomasi"),
             std::string::npos);
+  EXPECT_NE(errorOf("aggregation = semiglobal\nwindow = 231\n").find("[stereo] window: must be at most 229"),
+            std::string::npos);
   EXPECT_NE(errorOf("scanline_p1 = -1\n").find("[stereo] scanline_p1"), std::string::npos);
   EXPECT_NE(errorOf("scanline_p1 = 10\nscanline_p2 = 5\n").find("[stereo] scanline_p2"), std::string::npos);
   EXPECT_NE(errorOf("scanline_p2 = 300\n").find("[stereo] scanline_p2"), std::string::npos);
