@@ -147,12 +147,17 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
   const int groups = frame.best_half && cameras > 1 ? cameras : 1;
   const int kept = groups == 1 ? 1 : (cameras + 1) / 2;
 
-  thread_local std::vector<Acc> ring_buffer, column_sum_buffer, score_buffer, combined_buffer;
-  thread_local std::vector<uchar> table_buffer;
+  thread_local std::vector<Acc> column_sum_buffer, score_buffer, combined_buffer;
+  thread_local std::vector<uchar> ring_buffer, table_buffer;
   thread_local std::vector<Acc> reverse_score_buffer, reverse_index_buffer;
   thread_local std::vector<Acc> row_cost_buffer, forward_path_buffer, backward_path_buffer;
-  Acc* const ring = scratch(ring_buffer, groups * window * row_size);
-  std::fill(ring, ring + groups * window * row_size, Acc{0});  // nothing leaves before the first rows
+  // The ring keeps each row's costs until they leave the window: as bytes when a group's costs
+  // add up within a byte (x-Sobel and up to four cameras, or any single camera), which halves
+  // its memory traffic, else as scores.
+  const bool byte_costs = (groups == 1 ? cameras : 1) * frame.max_difference <= 255;
+  const size_t ring_size = groups * window * row_size * (byte_costs ? 1 : sizeof(Acc));
+  uchar* const ring = scratch(ring_buffer, ring_size);
+  std::fill(ring, ring + ring_size, uchar{0});  // nothing leaves before the first rows
   // Column xe of group g is at column_sums + g * column_stride + (xe + 1) * padded; column -1 stays
   // zero, so the first pixel of a row slides its window in like every other one.
   const size_t column_stride = row_size + padded;
@@ -238,11 +243,12 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
     const uchar* reference_row = frame.reference.ptr<uchar>(yy + margin) + margin;
     for (int g = 0; g < groups; ++g) {
       const int first = groups == 1 ? 0 : g, last = groups == 1 ? cameras : g + 1;
-      const bool byte_sums = (last - first) * frame.max_difference <= 255;
       // Locals, so that the compiler keeps them in registers across the stores below.
       const uchar* const first_candidates = candidates[first];
       const ptrdiff_t first_x_step = candidate_x_step[first];
-      Acc* const ring_row = ring + (static_cast<size_t>(g) * window + slot) * row_size;
+      const size_t ring_row_offset = (static_cast<size_t>(g) * window + slot) * row_size;
+      uchar* const byte_ring_row = ring + ring_row_offset;
+      Acc* const ring_row = reinterpret_cast<Acc*>(ring) + ring_row_offset;
       Acc* const sums = column_sums + g * column_stride + padded;
       const int count = padded;
       for (int xe = 0; xe < nx; ++xe) {
@@ -270,17 +276,19 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
           }
         };
         const ptrdiff_t own_offset = x * first_x_step;
-        Acc* const slot_entry = ring_row + static_cast<size_t>(xe) * count;
         Acc* const sum_entry = sums + static_cast<size_t>(xe) * count;
         for (int b = 0; b < count; b += kByteLanes) {
-          Vec entering[kVectorsPerBytes];
+          Vec entering[kVectorsPerBytes], leaving[kVectorsPerBytes];
           const cv::v_uint8 own = pixelCost(first, first_candidates, own_offset + b);
-          if (byte_sums) {
+          if (byte_costs) {
             // The costs of every camera of the group add up within a byte: widen once.
             cv::v_uint8 total = own;
             for (int c = first + 1; c < last; ++c) {
               total = cv::v_add_wrap(total, pixelCost(c, candidates[c], x * candidate_x_step[c] + b));
             }
+            uchar* const ring_lanes = byte_ring_row + static_cast<size_t>(xe) * count + b;
+            Lanes::widen(cv::vx_load(ring_lanes), leaving);
+            cv::v_store(ring_lanes, total);
             Lanes::widen(total, entering);
           } else {
             Lanes::widen(own, entering);
@@ -289,13 +297,15 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
               Lanes::widen(pixelCost(c, candidates[c], x * candidate_x_step[c] + b), more);
               for (int i = 0; i < kVectorsPerBytes; ++i) entering[i] = Lanes::add(entering[i], more[i]);
             }
+            for (int i = 0; i < kVectorsPerBytes; ++i) {
+              Acc* const ring_lanes = ring_row + static_cast<size_t>(xe) * count + b + i * Lanes::kCount;
+              leaving[i] = cv::vx_load(ring_lanes);
+              cv::v_store(ring_lanes, entering[i]);
+            }
           }
           for (int i = 0; i < kVectorsPerBytes; ++i) {
-            Acc* const ring_lanes = slot_entry + b + i * Lanes::kCount;
             Acc* const sum_lanes = sum_entry + b + i * Lanes::kCount;
-            const Vec leaving = cv::vx_load(ring_lanes);
-            cv::v_store(ring_lanes, entering[i]);
-            cv::v_store(sum_lanes, Lanes::slide(cv::vx_load(sum_lanes), entering[i], leaving));
+            cv::v_store(sum_lanes, Lanes::slide(cv::vx_load(sum_lanes), entering[i], leaving[i]));
           }
         }
       }
