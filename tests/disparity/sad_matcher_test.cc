@@ -339,7 +339,7 @@ TEST(SadMatcherTest, BirchfieldTomasiScoresEqualTheSlowWay) {
 TEST(SadMatcherTest, BirchfieldTomasiForgivesHalfPixelSampling) {
   constexpr int kWidth = 120, kHeight = 30;
   cv::RNG rng(8);
-  // A row of linear pieces, 6 to 11 pixels long, at twice the resolution.
+  // A row of linear pieces of random slopes and lengths, at twice the image resolution.
   std::vector<int> fine(2 * kWidth + 20);
   int value = 128, slope = 0;
   for (size_t i = 0; i < fine.size(); ++i) {
