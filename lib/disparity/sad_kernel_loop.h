@@ -172,12 +172,13 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
   Acc* const row_costs = scratch(row_cost_buffer, row_pixels * padded);
   Acc* const forward_paths = scratch(forward_path_buffer, row_pixels * path_stride);
   Acc* const backward_paths = scratch(backward_path_buffer, 2 * path_stride);
-  uchar* const tables = scratch(table_buffer, (frame.birchfield_tomasi ? 3 : 1) * cameras * row_size);
+  // A tabulated camera's candidates, and with Birchfield-Tomasi their sampling intervals' too.
+  const int images_per_camera = frame.birchfield_tomasi ? 3 : 1;
+  uchar* const tables = scratch(table_buffer, images_per_camera * cameras * row_size);
   // Semi-global: the paths that come down from the row above (from the upper left, above and the
   // upper right) to every pixel of this row and of the previous one, and each path's lowest entry.
   constexpr int kDirectionsFromAbove = 3;
-  constexpr bool from_above = kPathsFromAbove;
-  const size_t above_pixels = from_above ? row_pixels : 0;
+  const size_t above_pixels = kPathsFromAbove ? row_pixels : 0;
   thread_local std::vector<Acc> above_path_buffer, above_lowest_buffer;
   Acc* const above_paths = scratch(above_path_buffer, 2 * kDirectionsFromAbove * above_pixels * path_stride);
   Acc* const above_lowest = scratch(above_lowest_buffer, 2 * kDirectionsFromAbove * above_pixels);
@@ -216,7 +217,6 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
   const uchar* reference_low_rows[kMaxCameras];
   const uchar* reference_high_rows[kMaxCameras];
   const bool birchfield_tomasi = frame.birchfield_tomasi;
-  const int images_per_camera = birchfield_tomasi ? 3 : 1;
 
   // The candidates of a tabulated camera along row yy, sampled from `image` (arranged as the
   // camera's values), into `table`; returns where pixel 0's candidates would be.
@@ -533,7 +533,7 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
         const size_t i = static_cast<size_t>(x - region.x0);
         forward_lowest = followPath(pixel_costs, i == 0 ? nullptr : forward_paths + (i - 1) * path_stride,
                                     forward_lowest, forward_paths + i * path_stride);
-        for (int direction = 0; direction < kDirectionsFromAbove && from_above; ++direction) {
+        for (int direction = 0; direction < kDirectionsFromAbove && kPathsFromAbove; ++direction) {
           const ptrdiff_t from = static_cast<ptrdiff_t>(i) + direction - 1;
           const bool starts = y == region.y0 || from < 0 || from >= static_cast<ptrdiff_t>(row_pixels);
           const size_t previous = starts ? 0 : aboveIndex(y - 1, direction, static_cast<size_t>(from));
@@ -558,7 +558,7 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
       for (int chunk = 0; chunk < chunk_count; ++chunk) {
         const int b = chunk * Lanes::kCount;
         Vec sum = Lanes::add(cv::vx_load(forward + b), cv::vx_load(path + b));
-        for (int direction = 0; direction < kDirectionsFromAbove && from_above; ++direction) {
+        for (int direction = 0; direction < kDirectionsFromAbove && kPathsFromAbove; ++direction) {
           sum = Lanes::add(sum, cv::vx_load(above_paths + aboveIndex(y, direction, i) * path_stride + b));
         }
         // Padding lanes (the largest score, added up and wrapped) become zero; decide() pads them again.
