@@ -36,9 +36,19 @@ struct ArrangedImage {
   cv::Mat1b buffer;           // `padded`, or its transpose or shear for vertical and diagonal cameras
 };
 
-struct CandidateSource {
-  cv::Mat1b filtered, filtered_low, filtered_high;  // the prefiltered image and its sampling interval
+// The images a pixel is compared on, whose costs add up to the pixel's cost: channel 0 is the
+// prefiltered image; with StereoOptions::intensity_term, channel 1 is the grey levels at a quarter
+// scale (as cv::StereoSGBM adds them to its x-Sobel cost).
+constexpr int kMaxChannels = 2;
+
+// One channel of a secondary camera: its image and sampling interval, and their arrangements.
+struct CandidateChannel {
+  cv::Mat1b image, image_low, image_high;
   ArrangedImage values, low, high;
+};
+
+struct CandidateSource {
+  std::vector<CandidateChannel> channels;  // arranged alike: the same address reads each channel
   ptrdiff_t origin = 0;
   ptrdiff_t x_step = 0;
   ptrdiff_t y_step = 0;
@@ -48,20 +58,24 @@ struct CandidateSource {
   bool tabulated() const { return !taps.empty(); }
 };
 
+// One channel of the reference, padded by margin. PixelCost::kBirchfieldTomasi: its sampling
+// interval along each camera's baseline (one pair per camera, as the cameras' baselines may point
+// different ways).
+struct ReferenceChannel {
+  cv::Mat1b image, padded;
+  std::vector<cv::Mat1b> low, high;
+};
+
 struct PreparedFrame {
-  cv::Mat1b filtered_reference;
-  cv::Mat1b reference;  // prefiltered, padded by margin
+  std::vector<ReferenceChannel> reference;  // one per channel
   std::vector<CandidateSource> sources;
-  // PixelCost::kBirchfieldTomasi: the reference's sampling interval along each camera's baseline,
-  // padded by margin (one pair per camera, as the cameras' baselines may point different ways).
   bool birchfield_tomasi = false;
-  std::vector<cv::Mat1b> reference_low, reference_high;
   int margin = 0;
   int radius = 0;
   int min_disparity = 0;
   int disparities = 0;         // D
   int padded_disparities = 0;  // D rounded up to whole byte vectors
-  int max_difference = 255;    // the largest absolute difference of two prefiltered pixels
+  int max_difference = 255;    // the largest cost of one pixel, all channels
   bool best_half = false;
   bool subpixel = false;
   bool second_best = false;  // find the runner-up score (SadMatch::second_score)

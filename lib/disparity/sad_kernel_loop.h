@@ -172,8 +172,11 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
   Acc* const row_costs = scratch(row_cost_buffer, row_pixels * padded);
   Acc* const forward_paths = scratch(forward_path_buffer, row_pixels * path_stride);
   Acc* const backward_paths = scratch(backward_path_buffer, 2 * path_stride);
-  // A tabulated camera's candidates, and with Birchfield-Tomasi their sampling intervals' too.
-  const int images_per_camera = frame.birchfield_tomasi ? 3 : 1;
+  // A tabulated camera's candidates in each channel, and with Birchfield-Tomasi their sampling
+  // intervals' too.
+  const int channels = static_cast<int>(frame.reference.size());
+  const int images_per_channel = frame.birchfield_tomasi ? 3 : 1;
+  const int images_per_camera = channels * images_per_channel;
   uchar* const tables = scratch(table_buffer, images_per_camera * cameras * row_size);
   // Semi-global: the paths that come down from the row above (from the upper left, above and the
   // upper right) to every pixel of this row and of the previous one, and each path's lowest entry.
@@ -207,15 +210,16 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
     padding[chunk - whole_chunks] = cv::vx_load(pad);
   }
 
-  // Per camera: where row yy's candidates start and the step from pixel to pixel; for
-  // Birchfield-Tomasi also the candidates' sampling intervals (same addresses in their images) and
-  // the reference's along that camera's baseline.
-  const uchar* candidates[kMaxCameras];
-  const uchar* candidate_lows[kMaxCameras];
-  const uchar* candidate_highs[kMaxCameras];
+  // Per channel and camera: where row yy's candidates start and (per camera) the step from pixel to
+  // pixel; for Birchfield-Tomasi also the candidates' sampling intervals (same addresses in their
+  // images) and the reference's along that camera's baseline.
+  const uchar* reference_rows[kMaxChannels];
+  const uchar* candidates[kMaxCameras][kMaxChannels];
+  const uchar* candidate_lows[kMaxCameras][kMaxChannels];
+  const uchar* candidate_highs[kMaxCameras][kMaxChannels];
   ptrdiff_t candidate_x_step[kMaxCameras];
-  const uchar* reference_low_rows[kMaxCameras];
-  const uchar* reference_high_rows[kMaxCameras];
+  const uchar* reference_low_rows[kMaxCameras][kMaxChannels];
+  const uchar* reference_high_rows[kMaxCameras][kMaxChannels];
   const bool birchfield_tomasi = frame.birchfield_tomasi;
 
   // The candidates of a tabulated camera along row yy, sampled from `image` (arranged as the
@@ -238,13 +242,14 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
 
   // The pixel costs of reference row yy against every candidate, into the ring slot of the row,
   // updating the column sums by (entering row - leaving row).
-  const auto enterGroups = [&](int yy, int slot, auto birchfield_tomasi_tag) {
+  const auto enterGroups = [&](int slot, auto birchfield_tomasi_tag, auto intensity_tag) {
     constexpr bool kBirchfieldTomasi = decltype(birchfield_tomasi_tag)::value;
-    const uchar* reference_row = frame.reference.ptr<uchar>(yy + margin) + margin;
+    constexpr int kChannels = decltype(intensity_tag)::value ? 2 : 1;
     for (int g = 0; g < groups; ++g) {
       const int first = groups == 1 ? 0 : g, last = groups == 1 ? cameras : g + 1;
       // Locals, so that the compiler keeps them in registers across the stores below.
-      const uchar* const first_candidates = candidates[first];
+      const uchar* first_candidates[kChannels];
+      for (int k = 0; k < kChannels; ++k) first_candidates[k] = candidates[first][k];
       const ptrdiff_t first_x_step = candidate_x_step[first];
       const size_t ring_row_offset = (static_cast<size_t>(g) * window + slot) * row_size;
       uchar* const byte_ring_row = ring + ring_row_offset;
@@ -253,27 +258,38 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
       const int count = padded;
       for (int xe = 0; xe < nx; ++xe) {
         const int x = x0 - r + xe;
-        const cv::v_uint8 reference = cv::vx_setall_u8(reference_row[x]);
-        cv::v_uint8 reference_low[kMaxCameras], reference_high[kMaxCameras];
-        if constexpr (kBirchfieldTomasi) {
-          for (int c = first; c < last; ++c) {
-            reference_low[c] = cv::vx_setall_u8(reference_low_rows[c][x]);
-            reference_high[c] = cv::vx_setall_u8(reference_high_rows[c][x]);
+        cv::v_uint8 reference[kChannels];
+        cv::v_uint8 reference_low[kChannels][kMaxCameras], reference_high[kChannels][kMaxCameras];
+        for (int k = 0; k < kChannels; ++k) {
+          reference[k] = cv::vx_setall_u8(reference_rows[k][x]);
+          if constexpr (kBirchfieldTomasi) {
+            for (int c = first; c < last; ++c) {
+              reference_low[k][c] = cv::vx_setall_u8(reference_low_rows[c][k][x]);
+              reference_high[k][c] = cv::vx_setall_u8(reference_high_rows[c][k][x]);
+            }
           }
         }
-        // Camera c's cost of the candidates at `offset` from `values`: the absolute difference, or
-        // the smaller of the two distances of a pixel to the other's sampling interval (u8
-        // subtraction saturates at 0, so the larger of the two signed gaps is the distance).
-        const auto pixelCost = [&](int c, const uchar* values, ptrdiff_t offset) __attribute__((always_inline)) {
-          const cv::v_uint8 candidate = cv::vx_load(values + offset);
-          if constexpr (kBirchfieldTomasi) {
-            const cv::v_uint8 to_candidate =
-                cv::v_max(reference - cv::vx_load(candidate_highs[c] + offset), cv::vx_load(candidate_lows[c] + offset) - reference);
-            const cv::v_uint8 to_reference = cv::v_max(candidate - reference_high[c], reference_low[c] - candidate);
-            return cv::v_min(to_candidate, to_reference);
-          } else {
-            return cv::v_absdiff(reference, candidate);
+        // Camera c's cost of the candidates at `offset`, summed over the channels: the absolute
+        // difference, or the smaller of the two distances of a pixel to the other's sampling
+        // interval (u8 subtraction saturates at 0, so the larger of the two signed gaps is the
+        // distance). The channels' costs add up within a byte (max_difference).
+        const auto pixelCost = [&](int c, const uchar* const* values, ptrdiff_t offset) __attribute__((always_inline)) {
+          cv::v_uint8 cost;
+          for (int k = 0; k < kChannels; ++k) {
+            const cv::v_uint8 candidate = cv::vx_load(values[k] + offset);
+            cv::v_uint8 channel_cost;
+            if constexpr (kBirchfieldTomasi) {
+              const cv::v_uint8 to_candidate = cv::v_max(reference[k] - cv::vx_load(candidate_highs[c][k] + offset),
+                                                         cv::vx_load(candidate_lows[c][k] + offset) - reference[k]);
+              const cv::v_uint8 to_reference =
+                  cv::v_max(candidate - reference_high[k][c], reference_low[k][c] - candidate);
+              channel_cost = cv::v_min(to_candidate, to_reference);
+            } else {
+              channel_cost = cv::v_absdiff(reference[k], candidate);
+            }
+            cost = k == 0 ? channel_cost : cv::v_add_wrap(cost, channel_cost);
           }
+          return cost;
         };
         const ptrdiff_t own_offset = x * first_x_step;
         Acc* const sum_entry = sums + static_cast<size_t>(xe) * count;
@@ -313,36 +329,47 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
   };
 
   const auto enterRow = [&](int yy) {
+    for (int k = 0; k < channels; ++k) reference_rows[k] = frame.reference[k].padded.ptr<uchar>(yy + margin) + margin;
     for (int c = 0; c < cameras; ++c) {
       const int camera = region.cameras[c];
       const CandidateSource& source = frame.sources[camera];
-      if (birchfield_tomasi) {
-        reference_low_rows[c] = frame.reference_low[camera].ptr<uchar>(yy + margin) + margin;
-        reference_high_rows[c] = frame.reference_high[camera].ptr<uchar>(yy + margin) + margin;
-      }
-      if (!source.tabulated()) {
-        const ptrdiff_t row_offset = source.origin + yy * source.y_step;
-        candidates[c] = source.values.buffer.data + row_offset;
+      for (int k = 0; k < channels; ++k) {
+        const CandidateChannel& channel = source.channels[k];
         if (birchfield_tomasi) {
-          candidate_lows[c] = source.low.buffer.data + row_offset;
-          candidate_highs[c] = source.high.buffer.data + row_offset;
+          reference_low_rows[c][k] = frame.reference[k].low[camera].ptr<uchar>(yy + margin) + margin;
+          reference_high_rows[c][k] = frame.reference[k].high[camera].ptr<uchar>(yy + margin) + margin;
         }
-        candidate_x_step[c] = source.x_step;
-        continue;
+        if (!source.tabulated()) {
+          const ptrdiff_t row_offset = source.origin + yy * source.y_step;
+          candidates[c][k] = channel.values.buffer.data + row_offset;
+          if (birchfield_tomasi) {
+            candidate_lows[c][k] = channel.low.buffer.data + row_offset;
+            candidate_highs[c][k] = channel.high.buffer.data + row_offset;
+          }
+          continue;
+        }
+        uchar* const channel_tables =
+            tables + static_cast<size_t>(c * images_per_camera + k * images_per_channel) * row_size;
+        candidates[c][k] = tabulate(source, channel.values.buffer, yy, channel_tables);
+        if (birchfield_tomasi) {
+          candidate_lows[c][k] = tabulate(source, channel.low.buffer, yy, channel_tables + row_size);
+          candidate_highs[c][k] = tabulate(source, channel.high.buffer, yy, channel_tables + 2 * row_size);
+        }
       }
-      uchar* const camera_tables = tables + static_cast<size_t>(c * images_per_camera) * row_size;
-      candidates[c] = tabulate(source, source.values.buffer, yy, camera_tables);
-      if (birchfield_tomasi) {
-        candidate_lows[c] = tabulate(source, source.low.buffer, yy, camera_tables + row_size);
-        candidate_highs[c] = tabulate(source, source.high.buffer, yy, camera_tables + 2 * row_size);
-      }
-      candidate_x_step[c] = padded;
+      candidate_x_step[c] = source.tabulated() ? padded : source.x_step;
     }
     const int slot = (yy - (region.y0 - r)) % window;
+    const bool intensity = channels == 2;
     if (birchfield_tomasi) {
-      enterGroups(yy, slot, std::true_type{});
+      if (intensity) {
+        enterGroups(slot, std::true_type{}, std::true_type{});
+      } else {
+        enterGroups(slot, std::true_type{}, std::false_type{});
+      }
+    } else if (intensity) {
+      enterGroups(slot, std::false_type{}, std::true_type{});
     } else {
-      enterGroups(yy, slot, std::false_type{});
+      enterGroups(slot, std::false_type{}, std::false_type{});
     }
   };
 

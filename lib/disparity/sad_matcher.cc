@@ -56,6 +56,16 @@ bool wholePixelStep(double b, int min_d, int max_d, int& step) {
   return true;
 }
 
+// Grey level v at a quarter scale, rounded half up: (v + 2) / 4, 0..64.
+const cv::Mat1b& quarterScale() {
+  static const cv::Mat1b table = [] {
+    cv::Mat1b values(1, 256);
+    for (int v = 0; v < 256; ++v) values(0, v) = static_cast<uchar>((v + 2) >> 2);
+    return values;
+  }();
+  return table;
+}
+
 // Rewrites `image` so that its diagonals x - y = const become rows: sheared(x - y + rows - 1, y) =
 // image(y, x). Entries off the image are never read.
 void shear(const cv::Mat1b& image, cv::Mat1b& sheared) {
@@ -120,10 +130,11 @@ cv::Point baselineDirection(const SecondaryCamera& camera) {
   return {static_cast<int>(std::lround(camera.bx / longest)), static_cast<int>(std::lround(camera.by / longest))};
 }
 
-// Fills `source` for one secondary camera from its prefiltered image (and, for Birchfield-Tomasi,
-// that image's sampling interval), reusing its buffers when the frame size is unchanged.
+// Fills `source` for one secondary camera from its channels' images (and, for Birchfield-Tomasi,
+// their sampling intervals), reusing its buffers when the frame size is unchanged.
 void prepareCandidateSource(const SecondaryCamera& camera, const PreparedFrame& frame, CandidateSource& source) {
-  const int width = source.filtered.cols, height = source.filtered.rows, margin = frame.margin;
+  const cv::Mat1b& first_image = source.channels.front().image;
+  const int width = first_image.cols, height = first_image.rows, margin = frame.margin;
   const int min_d = frame.min_disparity, max_d = frame.min_disparity + frame.disparities - 1;
   int sx = 0, sy = 0;
   const bool direct = wholePixelStep(camera.bx, min_d, max_d, sx) && wholePixelStep(camera.by, min_d, max_d, sy) &&
@@ -132,12 +143,15 @@ void prepareCandidateSource(const SecondaryCamera& camera, const PreparedFrame& 
   source.step_x = direct ? sx : 0;
   source.step_y = direct ? sy : 0;
   if (!direct) sx = sy = 0;  // tabulated: padded only
-  arrangeImage(source.filtered, sx, sy, margin, source.values);
-  if (frame.birchfield_tomasi) {
-    arrangeImage(source.filtered_low, sx, sy, margin, source.low);
-    arrangeImage(source.filtered_high, sx, sy, margin, source.high);
+  for (CandidateChannel& channel : source.channels) {
+    arrangeImage(channel.image, sx, sy, margin, channel.values);
+    if (frame.birchfield_tomasi) {
+      arrangeImage(channel.image_low, sx, sy, margin, channel.low);
+      arrangeImage(channel.image_high, sx, sy, margin, channel.high);
+    }
   }
-  const ptrdiff_t step = static_cast<ptrdiff_t>(source.values.buffer.step);
+  const ArrangedImage& arranged = source.channels.front().values;
+  const ptrdiff_t step = static_cast<ptrdiff_t>(arranged.buffer.step);
   if (direct) {
     const ptrdiff_t x_sign = sx > 0 ? -1 : 1, y_sign = sy > 0 ? -1 : 1;
     const ptrdiff_t x_first = sx > 0 ? width - 1 : 0, y_first = sy > 0 ? height - 1 : 0;  // x', y' of pixel (0, 0)
@@ -150,7 +164,7 @@ void prepareCandidateSource(const SecondaryCamera& camera, const PreparedFrame& 
       source.x_step = step;
       source.y_step = y_sign;
     } else {  // sheared row x'-y'+rows-1, column y'+m+d
-      source.origin = (x_first - y_first + source.values.padded.rows - 1) * step + margin + y_first + min_d;
+      source.origin = (x_first - y_first + arranged.padded.rows - 1) * step + margin + y_first + min_d;
       source.x_step = x_sign * step;
       source.y_step = y_sign * (1 - step);
     }
@@ -182,18 +196,27 @@ void visibleRange(double b, int min_d, int max_d, int size, int& lo, int& hi) {
   hi = std::min(size - 1, size - 1 + static_cast<int>(std::floor(std::min(near_shift, far_shift))));
 }
 
-// The regions to match, and in `unseen` the rectangles that no camera sees at every candidate.
-std::vector<MatchRegion> matchRegions(const StereoFrame& frame, int min_d, int max_d, std::vector<cv::Rect>& unseen) {
+// The regions to match, and in `unseen` the rectangles that no camera sees at every candidate
+// (with `partial_candidates`: at any candidate). A pixel is matched with the cameras that see it at
+// every candidate; with `partial_candidates`, where there are none, with those that see it at some.
+std::vector<MatchRegion> matchRegions(const StereoFrame& frame, int min_d, int max_d, bool partial_candidates,
+                                      std::vector<cv::Rect>& unseen) {
   const int width = frame.reference.cols, height = frame.reference.rows;
   const size_t cameras = frame.secondaries.size();
-  std::vector<int> x_lo(cameras), x_hi(cameras), y_lo(cameras), y_hi(cameras);
+  // [0]: seen at every candidate; [1]: at the nearest candidate (the last to leave the image).
+  std::vector<int> x_lo[2], x_hi[2], y_lo[2], y_hi[2];
   std::vector<int> x_cuts{0, width}, y_cuts{0, height};
-  for (size_t c = 0; c < cameras; ++c) {
-    const SecondaryCamera& camera = frame.secondaries[c].camera;
-    visibleRange(camera.bx, min_d, max_d, width, x_lo[c], x_hi[c]);
-    visibleRange(camera.by, min_d, max_d, height, y_lo[c], y_hi[c]);
-    x_cuts.insert(x_cuts.end(), {std::clamp(x_lo[c], 0, width), std::clamp(x_hi[c] + 1, 0, width)});
-    y_cuts.insert(y_cuts.end(), {std::clamp(y_lo[c], 0, height), std::clamp(y_hi[c] + 1, 0, height)});
+  const int kinds = partial_candidates ? 2 : 1;
+  for (int kind = 0; kind < kinds; ++kind) {
+    for (auto* bounds : {&x_lo[kind], &x_hi[kind], &y_lo[kind], &y_hi[kind]}) bounds->resize(cameras);
+    for (size_t c = 0; c < cameras; ++c) {
+      const SecondaryCamera& camera = frame.secondaries[c].camera;
+      const int far_d = kind == 0 ? max_d : min_d;
+      visibleRange(camera.bx, min_d, far_d, width, x_lo[kind][c], x_hi[kind][c]);
+      visibleRange(camera.by, min_d, far_d, height, y_lo[kind][c], y_hi[kind][c]);
+      x_cuts.insert(x_cuts.end(), {std::clamp(x_lo[kind][c], 0, width), std::clamp(x_hi[kind][c] + 1, 0, width)});
+      y_cuts.insert(y_cuts.end(), {std::clamp(y_lo[kind][c], 0, height), std::clamp(y_hi[kind][c] + 1, 0, height)});
+    }
   }
   for (auto* cuts : {&x_cuts, &y_cuts}) {
     std::sort(cuts->begin(), cuts->end());
@@ -204,9 +227,12 @@ std::vector<MatchRegion> matchRegions(const StereoFrame& frame, int min_d, int m
   for (size_t i = 0; i + 1 < y_cuts.size(); ++i) {
     for (size_t k = 0; k + 1 < x_cuts.size(); ++k) {
       MatchRegion cell{x_cuts[k], x_cuts[k + 1], y_cuts[i], y_cuts[i + 1], {}};
-      for (size_t c = 0; c < cameras; ++c) {
-        if (x_lo[c] <= cell.x0 && x_hi[c] >= cell.x1 - 1 && y_lo[c] <= cell.y0 && y_hi[c] >= cell.y1 - 1) {
-          cell.cameras.push_back(static_cast<int>(c));
+      for (int kind = 0; kind < kinds && cell.cameras.empty(); ++kind) {
+        for (size_t c = 0; c < cameras; ++c) {
+          if (x_lo[kind][c] <= cell.x0 && x_hi[kind][c] >= cell.x1 - 1 && y_lo[kind][c] <= cell.y0 &&
+              y_hi[kind][c] >= cell.y1 - 1) {
+            cell.cameras.push_back(static_cast<int>(c));
+          }
         }
       }
       if (cell.cameras.empty()) {
@@ -246,8 +272,21 @@ void prepareFrame(const StereoFrame& frame, const StereoOptions& options, const 
   prepared.min_disparity = options.min_disparity;
   prepared.disparities = options.disparityCount();
   prepared.padded_disparities = roundUp(prepared.disparities, kernel.byte_lanes);
-  prepared.max_difference = maxPrefilteredDifference(options.prefilter, options.prefilter_cap);
-  prepared.margin = prepared.radius + prepared.padded_disparities + 2;
+  const int channels = options.intensity_term ? 2 : 1;
+  // Grey levels at a quarter scale (rounded, 0..64) add at most 64 to a pixel's cost.
+  prepared.max_difference =
+      maxPrefilteredDifference(options.prefilter, options.prefilter_cap) + (options.intensity_term ? 64 : 0);
+  // Candidates off the image read the replicated border: pixels near the edge with
+  // partial_candidates reach up to the last (padding) candidate's offset beyond it.
+  double widest_baseline = 0;
+  for (const SecondaryView& view : frame.secondaries) {
+    widest_baseline = std::max({widest_baseline, std::abs(view.camera.bx), std::abs(view.camera.by)});
+  }
+  const int beyond_edge =
+      options.partial_candidates
+          ? static_cast<int>(std::ceil(widest_baseline * (prepared.min_disparity + prepared.padded_disparities)))
+          : 0;
+  prepared.margin = prepared.radius + std::max(prepared.padded_disparities, beyond_edge) + 2;
   prepared.best_half = options.combination == CameraCombination::kBestHalf;
   prepared.subpixel = options.subpixel;
   prepared.second_best = options.second_best_ratio < 1.0;
@@ -257,13 +296,16 @@ void prepareFrame(const StereoFrame& frame, const StereoOptions& options, const 
   prepared.paths_from_above = options.aggregation == CostAggregation::kSemiGlobal;
   prepared.scanline_p1 = options.scanline_p1;
   prepared.scanline_p2 = options.scanline_p2;
-  const auto prefilter = [&](const cv::Mat1b& image, cv::Mat1b& filtered) {
-    prefilterImage(image, options.prefilter, options.prefilter_cap, options.texture_sigma, filtered);
+  const auto channelImage = [&](const cv::Mat1b& image, int channel, cv::Mat1b& out) {
+    if (channel == 0) {
+      prefilterImage(image, options.prefilter, options.prefilter_cap, options.texture_sigma, out);
+    } else {
+      cv::LUT(image, quarterScale(), out);
+    }
   };
   const size_t cameras = frame.secondaries.size();
   prepared.sources.resize(cameras);
-  prepared.reference_low.resize(prepared.birchfield_tomasi ? cameras : 0);
-  prepared.reference_high.resize(prepared.birchfield_tomasi ? cameras : 0);
+  prepared.reference.resize(channels);
   const auto pad = [&](const cv::Mat1b& image, cv::Mat1b& padded) {
     cv::copyMakeBorder(image, padded, prepared.margin, prepared.margin, prepared.margin, prepared.margin,
                        cv::BORDER_REPLICATE);
@@ -275,22 +317,31 @@ void prepareFrame(const StereoFrame& frame, const StereoOptions& options, const 
     thread_local cv::Mat1b low, high;
     for (int view = views.start; view < views.end; ++view) {
       if (view == 0) {
-        prefilter(frame.reference, prepared.filtered_reference);
-        pad(prepared.filtered_reference, prepared.reference);
-        for (size_t c = 0; c < prepared.reference_low.size(); ++c) {
-          const cv::Point direction = baselineDirection(frame.secondaries[c].camera);
-          samplingInterval(prepared.filtered_reference, direction.x, direction.y, low, high);
-          pad(low, prepared.reference_low[c]);
-          pad(high, prepared.reference_high[c]);
+        for (int k = 0; k < channels; ++k) {
+          ReferenceChannel& channel = prepared.reference[k];
+          channelImage(frame.reference, k, channel.image);
+          pad(channel.image, channel.padded);
+          channel.low.resize(prepared.birchfield_tomasi ? cameras : 0);
+          channel.high.resize(prepared.birchfield_tomasi ? cameras : 0);
+          for (size_t c = 0; c < channel.low.size(); ++c) {
+            const cv::Point direction = baselineDirection(frame.secondaries[c].camera);
+            samplingInterval(channel.image, direction.x, direction.y, low, high);
+            pad(low, channel.low[c]);
+            pad(high, channel.high[c]);
+          }
         }
         continue;
       }
       CandidateSource& source = prepared.sources[view - 1];
       const SecondaryCamera& camera = frame.secondaries[view - 1].camera;
-      prefilter(frame.secondaries[view - 1].image, source.filtered);
-      if (prepared.birchfield_tomasi) {
-        const cv::Point direction = baselineDirection(camera);
-        samplingInterval(source.filtered, direction.x, direction.y, source.filtered_low, source.filtered_high);
+      source.channels.resize(channels);
+      for (int k = 0; k < channels; ++k) {
+        CandidateChannel& channel = source.channels[k];
+        channelImage(frame.secondaries[view - 1].image, k, channel.image);
+        if (prepared.birchfield_tomasi) {
+          const cv::Point direction = baselineDirection(camera);
+          samplingInterval(channel.image, direction.x, direction.y, channel.image_low, channel.image_high);
+        }
       }
       prepareCandidateSource(camera, prepared, source);
     }
@@ -335,6 +386,30 @@ void resetResult(int height, int width, const StereoOptions& options, const std:
   }
 }
 
+// Near the edges (partial_candidates), a winner whose candidate lies off a camera's image was
+// compared with the replicated border: no match.
+void rejectMatchesOffTheImage(const StereoFrame& frame, const std::vector<MatchRegion>& regions,
+                              cv::Mat1f& disparity) {
+  const float last_x = static_cast<float>(disparity.cols - 1), last_y = static_cast<float>(disparity.rows - 1);
+  for (const MatchRegion& region : regions) {
+    for (int y = region.y0; y < region.y1; ++y) {
+      float* row = disparity.ptr<float>(y);
+      for (int x = region.x0; x < region.x1; ++x) {
+        const float d = row[x];
+        if (d == kInvalidDisparity) continue;
+        for (const int c : region.cameras) {
+          const SecondaryCamera& camera = frame.secondaries[c].camera;
+          const float sx = static_cast<float>(x - camera.bx * d), sy = static_cast<float>(y - camera.by * d);
+          if (sx < 0 || sx > last_x || sy < 0 || sy > last_y) {
+            row[x] = kInvalidDisparity;
+            break;
+          }
+        }
+      }
+    }
+  }
+}
+
 }  // namespace
 
 SadMatcher::SadMatcher(const StereoOptions& options) : options_(options), workspace_(std::make_unique<Workspace>()) {
@@ -355,7 +430,8 @@ const SadMatch& SadMatcher::match(const StereoFrame& frame) {
   prepareFrame(frame, options, kernel, prepared);
   SadMatch& match = workspace_->result;
   std::vector<cv::Rect> unseen;
-  const std::vector<MatchRegion> regions = matchRegions(frame, options.min_disparity, options.max_disparity, unseen);
+  const std::vector<MatchRegion> regions =
+      matchRegions(frame, options.min_disparity, options.max_disparity, options.partial_candidates, unseen);
   resetResult(frame.reference.rows, frame.reference.cols, options, unseen, prepared, match);
 
   const int height = frame.reference.rows;
@@ -388,6 +464,7 @@ const SadMatch& SadMatcher::match(const StereoFrame& frame) {
   } else {
     cv::parallel_for_(cv::Range(0, stripes), matchStripes, stripes);
   }
+  if (options.partial_candidates) rejectMatchesOffTheImage(frame, regions, match.disparity);
   return match;
 }
 

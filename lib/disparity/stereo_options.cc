@@ -81,6 +81,7 @@ StereoOptions loadStereoOptions(IniSection& section) {
   options.prefilter_cap = section.getInt("prefilter_cap", options.prefilter_cap);
   options.pixel_cost = parseEnum(section.getString("pixel_cost", nameOf(options.pixel_cost, kPixelCostNames)),
                                  kPixelCostNames, prefix + "pixel_cost");
+  options.intensity_term = section.getBool("intensity_term", options.intensity_term);
   options.combination =
       parseEnum(section.getString("combination", nameOf(options.combination, kCombinationNames)),
                 kCombinationNames, prefix + "combination");
@@ -95,6 +96,7 @@ StereoOptions loadStereoOptions(IniSection& section) {
   options.second_best_ratio = section.getDouble("second_best_ratio", options.second_best_ratio);
   options.left_right_check = section.getBool("left_right_check", options.left_right_check);
   options.left_right_max_diff = section.getDouble("left_right_max_diff", options.left_right_max_diff);
+  options.partial_candidates = section.getBool("partial_candidates", options.partial_candidates);
   options.subpixel = section.getBool("subpixel", options.subpixel);
   options.threads = section.getInt("threads", options.threads);
   options.simd = parseEnum(section.getString("simd", toString(options.simd)), kSimdNames, prefix + "simd");
@@ -123,6 +125,9 @@ void validateStereoOptions(const StereoOptions& options, const std::string& sect
     fail("window", "must be odd and in 3.." + std::to_string(kMaxWindow));
   }
   if (options.prefilter_cap < 1 || options.prefilter_cap > 127) fail("prefilter_cap", "must be in 1..127");
+  if (options.intensity_term && (options.prefilter == Prefilter::kNone || options.prefilter_cap > 63)) {
+    fail("intensity_term", "needs prefilter = xsobel or log with prefilter_cap <= 63");
+  }
   // A jump costs at most the largest difference of one pixel: that bound keeps the aggregated
   // scores (two paths, each at most the largest window score plus the large-jump cost) inside 32
   // bits for any window and rig.

@@ -61,6 +61,11 @@ struct StereoOptions {
   int prefilter_cap = 31;  // clip of the prefiltered image, 1..127
 
   PixelCost pixel_cost = PixelCost::kAbsoluteDifference;
+  // Adds the cost of the grey levels at a quarter scale to the prefiltered images' cost, as
+  // cv::StereoSGBM does: the prefilter keeps only edges, and the grey levels tell apart the
+  // candidates that a flat or repeated gradient leaves alike. Needs a prefilter (xsobel or log)
+  // with prefilter_cap <= 63, so that both costs of a pixel fit a byte.
+  bool intensity_term = false;
 
   CameraCombination combination = CameraCombination::kSum;
 
@@ -87,6 +92,12 @@ struct StereoOptions {
   // pixel only if the disparity found there differs by at most left_right_max_diff.
   bool left_right_check = true;
   double left_right_max_diff = 1.0;
+  // Pixels within max_disparity of the image edge a baseline points away from (the left band of a
+  // binocular rig) have some candidates off the secondary image. false: those that no camera sees
+  // at every candidate stay invalid, as cv::StereoBM leaves them. true: they are matched against
+  // the replicated border at every candidate, as cv::StereoSGBM matches the whole width, and a
+  // match is kept only where its candidate is inside the image.
+  bool partial_candidates = false;
   bool subpixel = false;  // parabola through the best score and its neighbours (section 3.2: off)
 
   int threads = 1;  // horizontal stripes matched in parallel (cv::parallel_for_)

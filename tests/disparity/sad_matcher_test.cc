@@ -156,8 +156,39 @@ int windowSad(const std::vector<cv::Mat1b>& images, const std::vector<SecondaryC
   return sad;
 }
 
-// Window scores computed the slow way: per candidate, per camera, the plain SAD of the prefiltered
-// images over the window, combined by sum or by the ceil(N/2) lowest.
+// The images of each cost channel, the views in the same order: the views prefiltered as
+// `options` says, and with the intensity term their grey levels at a quarter scale, rounded half
+// up.
+using Channels = std::vector<std::vector<cv::Mat1b>>;
+
+Channels channelImages(const std::vector<cv::Mat1b>& views, const StereoOptions& options) {
+  Channels channels(options.intensity_term ? 2 : 1);
+  for (const cv::Mat1b& view : views) {
+    cv::Mat1b filtered;
+    prefilterImage(view, options.prefilter, options.prefilter_cap, options.texture_sigma, filtered);
+    channels[0].push_back(filtered);
+    if (!options.intensity_term) continue;
+    cv::Mat1b quarter(view.size());
+    for (int y = 0; y < view.rows; ++y) {
+      for (int x = 0; x < view.cols; ++x) quarter(y, x) = static_cast<uchar>((view(y, x) + 2) / 4);
+    }
+    channels[1].push_back(quarter);
+  }
+  return channels;
+}
+
+// Camera c's window cost: its windowSad summed over the channels.
+int cameraCost(const Channels& channels, const std::vector<SecondaryCamera>& cameras, size_t c,
+               const StereoOptions& options, int x, int y, int d) {
+  int cost = 0;
+  for (const std::vector<cv::Mat1b>& images : channels) {
+    cost += windowSad(images, cameras, c, options.window, x, y, d, options.pixel_cost);
+  }
+  return cost;
+}
+
+// Window scores computed the slow way: per candidate, per camera, the cost of the channels over
+// the window, combined by sum or by the ceil(N/2) lowest.
 struct BruteForce {
   int best_score;
   int score_sum;
@@ -165,14 +196,14 @@ struct BruteForce {
   int second_score;  // lowest score more than one disparity from the best
 };
 
-BruteForce bruteForce(const std::vector<cv::Mat1b>& images, const std::vector<SecondaryCamera>& cameras,
+BruteForce bruteForce(const Channels& channels, const std::vector<SecondaryCamera>& cameras,
                       const StereoOptions& options, int x, int y, bool best_half) {
   BruteForce result{1 << 30, 0, -1, std::numeric_limits<int>::max()};
   std::vector<int> scores;
   for (int d = options.min_disparity; d <= options.max_disparity; ++d) {
     std::vector<int> per_camera;
     for (size_t c = 0; c < cameras.size(); ++c) {
-      per_camera.push_back(windowSad(images, cameras, c, options.window, x, y, d, options.pixel_cost));
+      per_camera.push_back(cameraCost(channels, cameras, c, options, x, y, d));
     }
     std::sort(per_camera.begin(), per_camera.end());
     const size_t kept = best_half ? (per_camera.size() + 1) / 2 : per_camera.size();
@@ -218,16 +249,14 @@ void expectMatchesBruteForce(const std::vector<SecondaryCamera>& cameras, Stereo
   const StereoFrame frame = noiseFrame(cameras, cv::Size(80, 60), 11, images);
   options.prefilter = prefilter;
   options.second_best_ratio = 0.9;  // so that the runner-up is found
-  for (cv::Mat1b& image : images) {
-    cv::Mat1b filtered;
-    prefilterImage(image, prefilter, options.prefilter_cap, options.texture_sigma, filtered);
-    image = filtered;
-  }
+  const Channels channels = channelImages(images, options);
   const SadMatch match = SadMatcher(options).match(frame);
   const bool best_half = options.combination == CameraCombination::kBestHalf;
+  SCOPED_TRACE(::testing::Message() << cameras.size() << " camera(s), first (" << cameras[0].bx << ", "
+                                    << cameras[0].by << "), window " << options.window);
   // Points where every camera of the cases below sees every candidate.
   for (const cv::Point& p : {cv::Point(40, 30), cv::Point(38, 40), cv::Point(45, 25)}) {
-    const BruteForce expected = bruteForce(images, cameras, options, p.x, p.y, best_half);
+    const BruteForce expected = bruteForce(channels, cameras, options, p.x, p.y, best_half);
     EXPECT_EQ(match.best_score(p), expected.best_score) << p;
     EXPECT_EQ(match.score_sum(p), expected.score_sum) << p;
     EXPECT_EQ(match.disparity(p), expected.best_disparity) << p;
@@ -438,12 +467,12 @@ std::vector<long long> pathStep(const std::vector<long long>& cost, const std::v
 // paths from the left and from the right along each row and, for the semi-global aggregation, the
 // paths from the upper left, from above and from the upper right, each restarting at the region's
 // edges; their sum, as totals[y][x - x0][candidate].
-std::vector<std::vector<std::vector<long long>>> bruteForceAggregation(const std::vector<cv::Mat1b>& images,
+std::vector<std::vector<std::vector<long long>>> bruteForceAggregation(const Channels& channels,
                                                                        const std::vector<SecondaryCamera>& cameras,
                                                                        const StereoOptions& options, int x0, int x1) {
   using Paths = std::vector<std::vector<long long>>;  // [column][candidate]
   const int candidates = options.disparityCount();
-  const int columns = x1 - x0, rows = images[0].rows;
+  const int columns = x1 - x0, rows = channels[0][0].rows;
   const long long scale = static_cast<long long>(options.window) * options.window * static_cast<long long>(cameras.size());
   const long long p1 = std::llround(options.scanline_p1 * scale), p2 = std::llround(options.scanline_p2 * scale);
   std::vector<Paths> totals(rows, Paths(columns, std::vector<long long>(candidates, 0)));
@@ -453,8 +482,7 @@ std::vector<std::vector<std::vector<long long>>> bruteForceAggregation(const std
     for (int i = 0; i < columns; ++i) {
       for (int j = 0; j < candidates; ++j) {
         for (size_t c = 0; c < cameras.size(); ++c) {
-          cost[i][j] += windowSad(images, cameras, c, options.window, x0 + i, y, options.min_disparity + j,
-                                options.pixel_cost);
+          cost[i][j] += cameraCost(channels, cameras, c, options, x0 + i, y, options.min_disparity + j);
         }
       }
     }
@@ -508,22 +536,29 @@ BruteForce decideBruteForce(const std::vector<long long>& total, const StereoOpt
   return result;
 }
 
-// `options.aggregation` (scanline or semi-global) against bruteForceAggregation.
-void expectPathsMatchBruteForce(const std::vector<SecondaryCamera>& cameras, StereoOptions options, int x0, int x1) {
+// `options.aggregation` (scanline or semi-global) against bruteForceAggregation, on the images
+// prefiltered by `prefilter` (raw grey levels by default). With partial_candidates, the pixels
+// whose best candidate is off the secondary image have no disparity.
+void expectPathsMatchBruteForce(const std::vector<SecondaryCamera>& cameras, StereoOptions options, int x0, int x1,
+                                Prefilter prefilter = Prefilter::kNone) {
   std::vector<cv::Mat1b> images;
   const StereoFrame frame = noiseFrame(cameras, cv::Size(70, 30), 23, images);
-  options.prefilter = Prefilter::kNone;  // compare raw grey levels
+  options.prefilter = prefilter;
   options.second_best_ratio = 0.9;      // so that the runner-up is found
   options.uniqueness_threshold = 0.5;   // and the sum of scores
   // One camera on the row: the left-right check reads the reverse match from the aggregated scores.
   options.left_right_check = cameras.size() == 1;
   const SadMatch match = SadMatcher(options).match(frame);
-  const auto totals = bruteForceAggregation(images, cameras, options, x0, x1);
+  const auto totals = bruteForceAggregation(channelImages(images, options), cameras, options, x0, x1);
+  const int width = images[0].cols;
   for (const int y : {0, 14, 29}) {
     for (int x = x0; x < x1; ++x) {
       const BruteForce pixel = decideBruteForce(totals[y][x - x0], options);
+      const int sample = x - static_cast<int>(cameras[0].bx) * pixel.best_disparity;
+      const bool off_image = sample < 0 || sample >= width;
       ASSERT_EQ(match.best_score(y, x), pixel.best_score) << "(" << x << ", " << y << ")";
-      ASSERT_EQ(match.disparity(y, x), pixel.best_disparity) << "(" << x << ", " << y << ")";
+      ASSERT_EQ(match.disparity(y, x), off_image ? kInvalidDisparity : pixel.best_disparity)
+          << "(" << x << ", " << y << ")";
       ASSERT_EQ(match.second_score(y, x), pixel.second_score) << "(" << x << ", " << y << ")";
       ASSERT_EQ(match.score_sum(y, x), pixel.score_sum) << "(" << x << ", " << y << ")";
     }
@@ -595,6 +630,86 @@ TEST(SadMatcherTest, BirchfieldTomasiWithSemiGlobalPathsEqualsTheSlowWay) {
   options.pixel_cost = PixelCost::kBirchfieldTomasi;
   options.aggregation = CostAggregation::kSemiGlobal;
   expectPathsMatchBruteForce({{1, 0}}, options, 12, 70);
+}
+
+// The grey levels at a quarter scale added to the x-Sobel costs: one camera and several, direct
+// and interpolated (baselines of 2), best half, Birchfield-Tomasi, and 32-bit scores.
+TEST(SadMatcherTest, IntensityTermAddsTheQuarterScaleGreyLevelsTheSlowWay) {
+  StereoOptions options = matchOptions();
+  options.intensity_term = true;
+  expectMatchesBruteForce({{1, 0}}, options, Prefilter::kXSobel);
+  expectMatchesBruteForce({{-1, 0}, {0, -1}, {1, 1}}, options, Prefilter::kXSobel);
+  options.combination = CameraCombination::kBestHalf;
+  expectMatchesBruteForce({{-2, 0}, {-1, 0}, {1, 0}, {2, 0}}, options, Prefilter::kXSobel);
+  options.combination = CameraCombination::kSum;
+  options.pixel_cost = PixelCost::kBirchfieldTomasi;
+  expectMatchesBruteForce({{1, 0}, {-2, 0}}, options, Prefilter::kXSobel);
+  options.window = 15;  // 225 * (62 + 64) * 2 cameras > 32767
+  options.max_disparity = 10;
+  expectMatchesBruteForce({{1, 0}, {0, 1}}, options, Prefilter::kXSobel);
+}
+
+TEST(SadMatcherTest, IntensityTermWithPathsEqualsTheSlowWay) {
+  StereoOptions options = matchOptions();
+  options.window = 3;
+  options.max_disparity = 12;
+  options.intensity_term = true;
+  options.aggregation = CostAggregation::kScanline;
+  expectPathsMatchBruteForce({{1, 0}}, options, 12, 70, Prefilter::kXSobel);
+  options.aggregation = CostAggregation::kSemiGlobal;
+  options.pixel_cost = PixelCost::kBirchfieldTomasi;
+  expectPathsMatchBruteForce({{-1, 0}}, options, 0, 58, Prefilter::kXSobel);
+}
+
+// With partial_candidates the binocular rig's edge band joins the rest of the row in one region:
+// its candidates off the image are scored against the replicated border, the paths and the
+// left-right check's reverse match run across the whole row, and a best candidate off the image
+// leaves the pixel without a disparity.
+TEST(SadMatcherTest, PartialCandidatesMatchTheEdgeBandTheSlowWay) {
+  StereoOptions options = matchOptions();
+  options.window = 3;
+  options.max_disparity = 12;
+  options.scanline_p1 = 2;
+  options.scanline_p2 = 9;
+  options.partial_candidates = true;
+  options.aggregation = CostAggregation::kScanline;
+  expectPathsMatchBruteForce({{1, 0}}, options, 0, 70);
+  expectPathsMatchBruteForce({{-1, 0}}, options, 0, 70);
+  // Columns 0-3 miss even the nearest candidate; the margin covers the band's farthest reads.
+  options.min_disparity = 4;
+  options.aggregation = CostAggregation::kSemiGlobal;
+  expectPathsMatchBruteForce({{1, 0}}, options, 4, 70);
+}
+
+// A textured background at disparity 6 seen by a right camera (band on the left) and by a left
+// one (band on the right), 16 candidates: inside the band the background is found wherever its
+// candidate is on the image, and nowhere else; without partial_candidates the band is empty.
+TEST(SadMatcherTest, PartialCandidatesFindTheSurfaceInTheEdgeBand) {
+  constexpr int kDisparity = 6, kMaxDisparity = 15, kRadius = 3;
+  SyntheticScene scene(kSize, kDisparity, 29);
+  const cv::Mat1f truth = scene.trueDisparity();
+  const int w = kSize.width, h = kSize.height;
+  for (const double bx : {1.0, -1.0}) {
+    const StereoFrame frame = renderFrame(scene, {{bx, 0}});
+    const auto band = [&](int from, int to) {  // columns [from, to) counted from the band's edge
+      return bx > 0 ? cv::Rect(from, 10, to - from, h - 20) : cv::Rect(w - to, 10, to - from, h - 20);
+    };
+    StereoOptions options = matchOptions();
+    const SadMatch without = SadMatcher(options).match(frame);
+    EXPECT_EQ(testing::shareInvalid(without.disparity, rectMask(kSize, band(0, kMaxDisparity))), 1.0) << bx;
+    options.partial_candidates = true;
+    const SadMatch with = SadMatcher(options).match(frame);
+    EXPECT_GE(shareCorrect(with.disparity, truth, rectMask(kSize, band(kDisparity + kRadius, kMaxDisparity))), 0.95)
+        << bx;
+    for (int y = 0; y < h; ++y) {
+      for (int x = 0; x < w; ++x) {
+        const float d = with.disparity(y, x);
+        if (d == kInvalidDisparity) continue;
+        const double sample = x - bx * d;
+        ASSERT_TRUE(sample >= 0 && sample <= w - 1) << "(" << x << ", " << y << ") d " << d << " camera " << bx;
+      }
+    }
+  }
 }
 
 // A flat band is ambiguous for a window inside it (every candidate that keeps the window in the
@@ -703,6 +818,13 @@ TEST(SadMatcherTest, Avx2GivesTheSameMatchAsSse2) {
       {"interpolated half baseline", {{0.5, 0}, {0, 0.5}}, [](StereoOptions& o) { o.max_disparity = 20; }},
       {"minimum disparity, threads", {{1, 0}},
        [](StereoOptions& o) { o.min_disparity = 5, o.max_disparity = 36, o.threads = 3; }},
+      {"intensity term, Birchfield-Tomasi, scanline, partial candidates, interpolated", {{0.5, 0}},
+       [](StereoOptions& o) {
+         o.intensity_term = true, o.pixel_cost = PixelCost::kBirchfieldTomasi,
+         o.aggregation = CostAggregation::kScanline, o.partial_candidates = true, o.max_disparity = 40;
+       }},
+      {"intensity term, trinocular, partial candidates", {{-1, 0}, {0, -1}},
+       [](StereoOptions& o) { o.intensity_term = true, o.partial_candidates = true, o.min_disparity = 3; }},
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(c.name);

@@ -20,7 +20,7 @@ std::string errorOf(const std::string& text) {
 TEST(StereoOptionsTest, LoadsEveryKey) {
   const StereoOptions options = load(
       "backend = sgbm\nmin_disparity = 2\nmax_disparity = 47\nwindow = 9\nprefilter = log\nprefilter_cap = 20\n"
-      "pixel_cost = birchfield_tomasi\ncombination = best_half\naggregation = semiglobal\nscanline_p1 = 3\nscanline_p2 = 40\ntexture_threshold = 1.5\ntexture_sigma = 2\nuniqueness_threshold = 0.03\n"
+      "pixel_cost = birchfield_tomasi\nintensity_term = true\npartial_candidates = true\ncombination = best_half\naggregation = semiglobal\nscanline_p1 = 3\nscanline_p2 = 40\ntexture_threshold = 1.5\ntexture_sigma = 2\nuniqueness_threshold = 0.03\n"
       "second_best_ratio = 0.85\nleft_right_check = false\nleft_right_max_diff = 2\nsubpixel = true\nthreads = 4\nsimd = sse2\n"
       "opencv_texture_threshold = 5\nopencv_uniqueness_ratio = 10\nopencv_speckle_window = 100\n"
       "opencv_speckle_range = 2\n");
@@ -32,6 +32,8 @@ TEST(StereoOptionsTest, LoadsEveryKey) {
   EXPECT_EQ(options.prefilter, Prefilter::kLog);
   EXPECT_EQ(options.prefilter_cap, 20);
   EXPECT_EQ(options.pixel_cost, PixelCost::kBirchfieldTomasi);
+  EXPECT_TRUE(options.intensity_term);
+  EXPECT_TRUE(options.partial_candidates);
   EXPECT_EQ(options.combination, CameraCombination::kBestHalf);
   EXPECT_EQ(options.aggregation, CostAggregation::kSemiGlobal);
   EXPECT_DOUBLE_EQ(options.scanline_p1, 3.0);
@@ -61,6 +63,8 @@ TEST(StereoOptionsTest, EmptySectionGivesTheDefaults) {
   EXPECT_DOUBLE_EQ(options.second_best_ratio, 1.0);  // the paper's quality-of-match test only
   EXPECT_EQ(options.aggregation, CostAggregation::kWindow);  // the paper's window SAD alone
   EXPECT_EQ(options.simd, SimdLevel::kAuto);
+  EXPECT_FALSE(options.intensity_term);      // the paper's cost on the prefiltered images alone
+  EXPECT_FALSE(options.partial_candidates);  // pixels that miss candidates stay unmatched
 }
 
 TEST(StereoOptionsTest, UnknownKeyIsNamedWithTheNearestKnownOne) {
@@ -88,6 +92,9 @@ TEST(StereoOptionsTest, BadValuesNameTheKey) {
   EXPECT_NE(errorOf("scanline_p1 = -1\n").find("[stereo] scanline_p1"), std::string::npos);
   EXPECT_NE(errorOf("scanline_p1 = 10\nscanline_p2 = 5\n").find("[stereo] scanline_p2"), std::string::npos);
   EXPECT_NE(errorOf("scanline_p2 = 300\n").find("[stereo] scanline_p2"), std::string::npos);
+  EXPECT_NE(errorOf("intensity_term = true\nprefilter = none\n").find("[stereo] intensity_term: needs prefilter"),
+            std::string::npos);
+  EXPECT_NE(errorOf("intensity_term = true\nprefilter_cap = 64\n").find("[stereo] intensity_term"), std::string::npos);
   EXPECT_NE(errorOf("simd = avx512\n").find("[stereo] simd: expected auto | avx2 | sse2"), std::string::npos);
 }
 
