@@ -387,24 +387,33 @@ void resetResult(int height, int width, const StereoOptions& options, const std:
 }
 
 // Near the edges (partial_candidates), a winner whose candidate lies off a camera's image was
-// compared with the replicated border: no match.
-void rejectMatchesOffTheImage(const StereoFrame& frame, const std::vector<MatchRegion>& regions,
+// compared with the replicated border: no match. Only pixels outside the rectangle where the
+// camera sees every candidate can have one.
+void rejectMatchesOffTheImage(const StereoFrame& frame, const std::vector<MatchRegion>& regions, int min_d, int max_d,
                               cv::Mat1f& disparity) {
-  const float last_x = static_cast<float>(disparity.cols - 1), last_y = static_cast<float>(disparity.rows - 1);
+  const int width = disparity.cols, height = disparity.rows;
   for (const MatchRegion& region : regions) {
-    for (int y = region.y0; y < region.y1; ++y) {
-      float* row = disparity.ptr<float>(y);
-      for (int x = region.x0; x < region.x1; ++x) {
-        const float d = row[x];
-        if (d == kInvalidDisparity) continue;
-        for (const int c : region.cameras) {
-          const SecondaryCamera& camera = frame.secondaries[c].camera;
-          const float sx = static_cast<float>(x - camera.bx * d), sy = static_cast<float>(y - camera.by * d);
-          if (sx < 0 || sx > last_x || sy < 0 || sy > last_y) {
-            row[x] = kInvalidDisparity;
-            break;
-          }
+    for (const int c : region.cameras) {
+      const SecondaryCamera& camera = frame.secondaries[c].camera;
+      int x_lo = 0, x_hi = 0, y_lo = 0, y_hi = 0;
+      visibleRange(camera.bx, min_d, max_d, width, x_lo, x_hi);
+      visibleRange(camera.by, min_d, max_d, height, y_lo, y_hi);
+      const auto check = [&](int y, int x_from, int x_to) {
+        float* row = disparity.ptr<float>(y);
+        for (int x = x_from; x < x_to; ++x) {
+          const float d = row[x];
+          if (d == kInvalidDisparity) continue;
+          const double sx = x - camera.bx * d, sy = y - camera.by * d;
+          if (sx < 0 || sx > width - 1 || sy < 0 || sy > height - 1) row[x] = kInvalidDisparity;
         }
+      };
+      for (int y = region.y0; y < region.y1; ++y) {
+        if (y < y_lo || y > y_hi) {
+          check(y, region.x0, region.x1);
+          continue;
+        }
+        check(y, region.x0, std::min(region.x1, x_lo));
+        check(y, std::max(region.x0, x_hi + 1), region.x1);
       }
     }
   }
@@ -464,7 +473,9 @@ const SadMatch& SadMatcher::match(const StereoFrame& frame) {
   } else {
     cv::parallel_for_(cv::Range(0, stripes), matchStripes, stripes);
   }
-  if (options.partial_candidates) rejectMatchesOffTheImage(frame, regions, match.disparity);
+  if (options.partial_candidates) {
+    rejectMatchesOffTheImage(frame, regions, options.min_disparity, options.max_disparity, match.disparity);
+  }
   return match;
 }
 
