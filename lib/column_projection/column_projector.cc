@@ -1,6 +1,7 @@
 #include "column_projection/column_projector.h"
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
 #include <limits>
 #include <stdexcept>
@@ -43,20 +44,27 @@ DisparityInterval bodyVolumeInterval(double k, double mount_z, const ProjectionO
 }  // namespace
 
 ColumnProjector::ColumnProjector(const CameraRig& rig, const ProjectionOptions& options)
-    : surface_band_px_(options.surface_band_px),
+    : mount_z_(rig.pose_on_robot.z()),
+      floor_clearance_(options.floor_clearance_m),
+      floor_end_min_disparity_(options.floor_end_max_depth_m > 0.0
+                                   ? rig.disparityForDepth(options.floor_end_max_depth_m)
+                                   : 0.0),
+      surface_band_px_(options.surface_band_px),
       min_reading_disparity_(options.max_depth_m > 0.0 ? rig.disparityForDepth(options.max_depth_m)
                                                        : 0.0) {
   const PinholeCamera& camera = rig.reference;
   lowest_.create(camera.height, camera.width);
   highest_.create(camera.height, camera.width);
+  height_factor_.create(camera.height, camera.width);
   const auto rotation = rig.pose_on_robot.getRotationMatrix();
-  const double mount_z = rig.pose_on_robot.z();
+  const double mount_z = mount_z_;
   for (int y = 0; y < camera.height; ++y) {
     for (int x = 0; x < camera.width; ++x) {
       // Height above the camera of the point (B/d)(x - cx, y - cy, f) is k / d.
       const double k = rig.baseline_m * (rotation(2, 0) * (x - camera.cx) +
                                          rotation(2, 1) * (y - camera.cy) +
                                          rotation(2, 2) * camera.focal_px);
+      height_factor_(y, x) = static_cast<float>(k);
       const DisparityInterval interval = bodyVolumeInterval(k, mount_z, options);
       lowest_(y, x) = static_cast<float>(interval.lowest);
       highest_(y, x) = static_cast<float>(interval.highest);
@@ -107,6 +115,17 @@ DisparityScan ColumnProjector::project(const cv::Mat1f& disparity) const {
       best_row[x] = median->second;
     }
   }
+  if (floor_end_min_disparity_ > 0.0) {
+    for (int x = 0; x < width; ++x) {
+      float foot = 0.0f;
+      int foot_row = -1;
+      // A surface seen in the column at the foot's depth or nearer is the reading already.
+      if (unmatchedFoot(disparity, x, foot, foot_row) && !(best_row[x] >= 0 && best[x] >= foot - 0.5f)) {
+        best[x] = foot;
+        best_row[x] = foot_row;
+      }
+    }
+  }
   const auto min_disparity = static_cast<float>(min_reading_disparity_);
   for (int x = 0; x < width; ++x) {
     if (best_row[x] < 0 || best[x] < min_disparity) {
@@ -115,6 +134,38 @@ DisparityScan ColumnProjector::project(const cv::Mat1f& disparity) const {
     }
   }
   return scan;
+}
+
+bool ColumnProjector::unmatchedFoot(const cv::Mat1f& disparity, int x, float& foot_disparity, int& foot_row) const {
+  // Up from the bottom row: the floor's last matched pixel before anything off the floor (or the
+  // horizon) comes into sight. Unmatched pixels on the way are floor without texture.
+  int floor_end = -1;
+  for (int y = disparity.rows - 1; y >= 0; --y) {
+    const float k = height_factor_(y, x);
+    if (k >= 0.0f) break;  // level or looking up: no floor in this row
+    const float d = disparity(y, x);
+    if (!isValidDisparity(d) || d <= 0.0f) continue;
+    if (std::abs(mount_z_ + k / d) > floor_clearance_) break;
+    floor_end = y;
+  }
+  if (floor_end < 0) return false;
+  // Its disparity on the floor plane (mount_z + k / d = 0): the row's geometry, not the noise.
+  const float foot = static_cast<float>(-height_factor_(floor_end, x) / mount_z_);
+  if (foot < floor_end_min_disparity_) return false;
+  // The rows above it that would show a surface standing there, from the floor up to
+  // floor_clearance_m, must mostly match nothing: a gap in the floor's texture has the floor
+  // again (or a farther surface) right above it. Three in four, as spike removal leaves a few
+  // stray matches on a flat surface.
+  constexpr double kUnmatchedShare = 0.75;
+  int rows = 0, unmatched = 0;
+  for (int y = floor_end - 1; y >= 0 && mount_z_ + height_factor_(y, x) / foot <= floor_clearance_; --y) {
+    ++rows;
+    unmatched += !isValidDisparity(disparity(y, x));
+  }
+  if (rows == 0 || unmatched < kUnmatchedShare * rows) return false;
+  foot_disparity = foot;
+  foot_row = floor_end;
+  return true;
 }
 
 }  // namespace stereonav

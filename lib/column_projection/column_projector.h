@@ -10,7 +10,9 @@ namespace stereonav {
 
 // Projects a disparity image onto the floor plane column by column (paper section 3.3, figure
 // 5c): per column, the largest valid disparity whose 3D point lies inside the robot's body volume,
-// or the median of the nearest surface's (ProjectionOptions::surface_band_px).
+// or the median of the nearest surface's (ProjectionOptions::surface_band_px); with
+// ProjectionOptions::floor_end_max_depth_m, the foot of an unmatched surface where the floor ends
+// in front of it.
 //
 // A pixel (x, y) at disparity d is the camera-frame point (B/d) (x - cx, y - cy, f), so its height
 // on the robot is mount_z + k(x, y) / d with k fixed by the rig. The body volume is therefore one
@@ -24,11 +26,21 @@ class ColumnProjector {
   DisparityScan project(const cv::Mat1f& disparity) const;
 
  private:
+  // The floor's end in column x, matched from the bottom up, if it is the foot of a surface that
+  // matched nothing: its disparity on the floor plane and its row; false otherwise.
+  bool unmatchedFoot(const cv::Mat1f& disparity, int x, float& foot_disparity, int& foot_row) const;
+
   // Inside the body volume iff lowest_ <= d <= highest_ (an empty interval has lowest_ > highest_;
   // highest_ is finite, so the invalid +inf never passes, and lowest_ > 0, so neither does a point
   // at infinity).
   cv::Mat1f lowest_;
   cv::Mat1f highest_;
+  // Height above the camera of pixel (x, y)'s point is height_factor_(y, x) / d.
+  cv::Mat1f height_factor_;
+  double mount_z_;
+  double floor_clearance_;
+  // Floor ends at a smaller disparity (deeper than floor_end_max_depth_m) are no feet; 0 = off.
+  double floor_end_min_disparity_;
   double surface_band_px_;
   // Readings below this disparity are deeper than max_depth_m (0: no limit).
   double min_reading_disparity_;

@@ -10,6 +10,8 @@ ProjectionOptions loadProjectionOptions(IniSection& section) {
   options.robot_height_m = section.getDouble("robot_height_m", options.robot_height_m, -100.0, 100.0);
   options.surface_band_px = section.getNonNegative("surface_band_px", options.surface_band_px, 1e4);
   options.max_depth_m = section.getDouble("max_depth_m", options.max_depth_m, 0.0, 1e4);
+  options.floor_end_max_depth_m =
+      section.getDouble("floor_end_max_depth_m", options.floor_end_max_depth_m, 0.0, 1e4);
   options.scan_max_range_m = section.getPositive("scan_max_range_m", options.scan_max_range_m, 1e4);
   const auto fail = [&](const std::string& key, const std::string& why) {
     throw ConfigError("[" + section.name() + "] " + key + ": " + why);

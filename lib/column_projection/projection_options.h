@@ -21,12 +21,20 @@ struct ProjectionOptions {
   // limit applies to the reading, not pixel by pixel: of a surface just beyond it only the
   // pixels that noise brings nearer would pass. 0 = no limit.
   double max_depth_m = 0.0;
+  // A surface with no texture (flat paint) matches nothing, so the body volume holds none of its
+  // pixels; but the textured floor in front of it, matched from the image's bottom up, ends at its
+  // foot. A column whose floor ends nearer than this depth (Z along the optical axis, metres),
+  // below pixels that mostly match nothing up to floor_clearance_m at that depth, reads an
+  // obstacle standing at the floor's end, unless it sees one nearer. Near only: far away the
+  // floor's texture fades below what the matcher finds, and its end is no foot. 0 = off (the
+  // paper's projection).
+  double floor_end_max_depth_m = 0.0;
   // The virtual laser scan's maxRange: obstacles farther than this are left out of it.
   double scan_max_range_m = 10.0;
 };
 
 // Section [projection]. Keys: floor_clearance_m, robot_height_m, surface_band_px, max_depth_m,
-// scan_max_range_m.
+// floor_end_max_depth_m, scan_max_range_m.
 // Throws ConfigError on bad values.
 ProjectionOptions loadProjectionOptions(IniSection& section);
 

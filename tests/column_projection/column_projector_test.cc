@@ -132,6 +132,65 @@ TEST(ColumnProjectorTest, ZeroDisparityIsNoObstacle) {
   EXPECT_EQ(scan.column_disparity[8], 0.5f);
 }
 
+ProjectionOptions withFloorEnd(double max_depth_m) {
+  ProjectionOptions options = bodyVolume(0.95);
+  options.floor_end_max_depth_m = max_depth_m;
+  return options;
+}
+
+// levelCorridor() with its wall in flat paint: the wall rows (10..74) match nothing. The floor,
+// d = (y - 50) / 5, ends at row 75, the wall's foot: Z = 2 m, d = 5.
+cv::Mat1f unmatchedWallCorridor() {
+  cv::Mat1f disparity = levelCorridor();
+  disparity(cv::Rect(0, 10, 150, 65)).setTo(kInvalidDisparity);
+  disparity(cv::Rect(161, 10, 40, 65)).setTo(kInvalidDisparity);
+  return disparity;
+}
+
+TEST(ColumnProjectorTest, AnUnmatchedWallIsReadAtTheFloorsEnd) {
+  const CameraRig rig = testRig(0, 0, 0, 0);
+  const DisparityScan off = ColumnProjector(rig, bodyVolume(0.95)).project(unmatchedWallCorridor());
+  EXPECT_FALSE(off.valid(20));  // the paper's projection sees nothing there
+  const DisparityScan scan = ColumnProjector(rig, withFloorEnd(3.0)).project(unmatchedWallCorridor());
+  for (int x = 0; x < 201; ++x) {
+    const bool box = x >= 150 && x <= 160;
+    // The foot on the floor plane: row 75 is 25 rows below the centre, Z = 0.5 * 100 / 25 = 2 m.
+    EXPECT_EQ(scan.column_disparity[x], box ? 8.0f : 5.0f) << "column " << x;
+    EXPECT_EQ(scan.column_row[x], box ? 40 : 75) << "column " << x;
+  }
+}
+
+TEST(ColumnProjectorTest, AFloorEndFartherThanTheLimitIsNoFoot) {
+  const CameraRig rig = testRig(0, 0, 0, 0);
+  EXPECT_FALSE(ColumnProjector(rig, withFloorEnd(1.9)).project(unmatchedWallCorridor()).valid(20));
+}
+
+TEST(ColumnProjectorTest, AGapInTheFloorsTextureIsNoFoot) {
+  // Rows 78..82 of the floor match nothing, and the textured wall stands behind: the reading is
+  // the wall (d = 5), not a foot at the gap's near edge (row 83, d = 6.6).
+  const CameraRig rig = testRig(0, 0, 0, 0);
+  cv::Mat1f disparity = levelCorridor();
+  disparity(cv::Rect(0, 78, 201, 5)).setTo(kInvalidDisparity);
+  const DisparityScan scan = ColumnProjector(rig, withFloorEnd(3.0)).project(disparity);
+  EXPECT_EQ(scan.column_disparity[20], 5.0f);
+  EXPECT_EQ(scan.column_row[20], 28);
+}
+
+TEST(ColumnProjectorTest, ALowUnmatchedBoxBeforeATexturedWallIsReadAtItsFoot) {
+  // A flat-painted box 0.3 m high at Z = 1.25 m in columns 100..120: rows 66..90 (heights 0.3
+  // down to 0 at that depth) match nothing; the textured wall (d = 5) shows above it. The floor
+  // ends at row 91 (Z = 50 / 41 = 1.22 m, d = 8.2), the box's foot to within a row.
+  const CameraRig rig = testRig(0, 0, 0, 0);
+  cv::Mat1f disparity = levelCorridor();
+  disparity(cv::Rect(100, 66, 21, 25)).setTo(kInvalidDisparity);
+  const DisparityScan without = ColumnProjector(rig, bodyVolume(0.95)).project(disparity);
+  EXPECT_EQ(without.column_disparity[110], 5.0f);  // the wall behind: the box is not seen
+  const DisparityScan scan = ColumnProjector(rig, withFloorEnd(3.0)).project(disparity);
+  EXPECT_FLOAT_EQ(scan.column_disparity[110], 8.2f);
+  EXPECT_EQ(scan.column_row[110], 91);
+  EXPECT_EQ(scan.column_disparity[90], 5.0f);  // beside the box, the wall
+}
+
 TEST(ColumnProjectorTest, RejectsImageOfTheWrongSize) {
   const ColumnProjector projector(testRig(0, 0, 0, 0), bodyVolume(1.0));
   EXPECT_THROW(projector.project(cv::Mat1f(120, 160, 5.0f)), std::invalid_argument);

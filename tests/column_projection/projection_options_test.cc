@@ -9,7 +9,7 @@ namespace {
 TEST(ProjectionOptionsTest, LoadsEveryKey) {
   mrpt::config::CConfigFileMemory config(
       "[projection]\nfloor_clearance_m = 0.1\nrobot_height_m = 1.4\nsurface_band_px = 1.5\n"
-      "max_depth_m = 3\nscan_max_range_m = 6\n");
+      "max_depth_m = 3\nfloor_end_max_depth_m = 2.5\nscan_max_range_m = 6\n");
   IniSection section(config, "projection");
   const ProjectionOptions options = loadProjectionOptions(section);
   section.rejectUnknownKeys();
@@ -17,7 +17,17 @@ TEST(ProjectionOptionsTest, LoadsEveryKey) {
   EXPECT_DOUBLE_EQ(options.robot_height_m, 1.4);
   EXPECT_DOUBLE_EQ(options.surface_band_px, 1.5);
   EXPECT_DOUBLE_EQ(options.max_depth_m, 3.0);
+  EXPECT_DOUBLE_EQ(options.floor_end_max_depth_m, 2.5);
   EXPECT_DOUBLE_EQ(options.scan_max_range_m, 6.0);
+}
+
+TEST(ProjectionOptionsTest, FloorEndIsOffByDefaultAndNotNegative) {
+  mrpt::config::CConfigFileMemory defaults("[projection]\n");
+  IniSection default_section(defaults, "projection");
+  EXPECT_EQ(loadProjectionOptions(default_section).floor_end_max_depth_m, 0.0);
+  mrpt::config::CConfigFileMemory config("[projection]\nfloor_end_max_depth_m = -1\n");
+  IniSection section(config, "projection");
+  EXPECT_THROW(loadProjectionOptions(section), ConfigError);
 }
 
 TEST(ProjectionOptionsTest, MaxDepthIsOffByDefaultAndNotNegative) {

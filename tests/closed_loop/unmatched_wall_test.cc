@@ -1,0 +1,113 @@
+// A wall in flat paint has nothing for stereo to match (issue 18): the map and the guard know it
+// only from the textured floor's end at its foot (ProjectionOptions::floor_end_max_depth_m).
+#include <mrpt/config/CConfigFileMemory.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "closed_loop/exploration_run.h"
+#include "mapping/map_outputs.h"
+#include "mapping/stereo_mapper.h"
+#include "simulator/simulation.h"
+#include "simulator/world_loader.h"
+#include "shipped_config.h"
+
+namespace stereonav {
+namespace {
+
+// A corridor 1.6 m wide whose textured walls run east from x = 0 to a flat-painted end wall at
+// x = 5 (its face at x = 4.95, half the default 0.1 m thickness short of its line).
+constexpr const char* kCorridor = R"(
+[world]
+start_pose = 0.8 0.8 0
+ceiling_height = 2.5
+[texture.flat]
+type = paint
+mean = 0.8
+[wall.sides]
+points = 5 0; 0 0; 0 1.6; 5 1.6
+[wall.end]
+points = 5 0; 5 1.6
+texture = flat
+)";
+constexpr double kEndWallFace = 4.95;
+
+// Occupied cells in the strip just before and in the end wall (x 4.75 .. 5.05), across the
+// corridor away from the side walls (y 0.45 .. 1.15: eight rows of 0.1 m cells).
+int occupiedAtTheEndWall(const DisparityTaggedGrid& grid, const OccupancyScale& scale) {
+  int rows = 0;
+  for (double y = 0.45; y <= 1.15 + 1e-9; y += 0.1) {
+    bool occupied = false;
+    for (double x = 4.75; x <= 5.05 + 1e-9; x += 0.1) {
+      int col = 0, row = 0;
+      if (grid.cellAt(x, y, col, row)) occupied |= scale.classify(grid.occupancy(col, row)) == CellClass::kOccupied;
+    }
+    rows += occupied;
+  }
+  return rows;
+}
+
+// The robot stands at x = 3.2, 1.75 m from the painted wall, looking at it, for 2 s (ten frames).
+int rowsMarkedFromAStandstill(const ExplorationConfig& config) {
+  std::string corridor = kCorridor;
+  corridor.replace(corridor.find("start_pose = 0.8"), 16, "start_pose = 3.2");
+  const World world = loadWorld(mrpt::config::CConfigFileMemory(corridor), "corridor.ini");
+  const SimulatorConfig& simulator = config.simulator;
+  Simulation simulation(world, simulator.rig, simulator.sensor, simulator.robot, simulator.simulation);
+  StereoMapper mapper(config.mapping, simulator.rig);
+  simulation.run(parseMotionPlan("0 0 0\n2 0 0\n", "stand.txt"), [&](const SimulatedFrame& frame) {
+    mapper.process(rigFrameOf(frame, simulator.rig), frame.odometry);
+  });
+  const OccupancyScale& scale = config.mapping.grid.stereo.update.scale;
+  return occupiedAtTheEndWall(gridOfMap(mapper.map(), scale), scale);
+}
+
+TEST(UnmatchedWallTest, TheMapMarksAFlatPaintedWallAtTheFloorsEnd) {
+  ExplorationConfig config = loadExplorationConfig(testing::shippedExplorationConfigPath());
+  config.mapping.projection.floor_end_max_depth_m = 2.0;  // beyond the wall's 1.75 m
+  EXPECT_GE(rowsMarkedFromAStandstill(config), 6);
+  // The paper's projection: the paint matches nothing, so nothing is marked there.
+  config.mapping.projection.floor_end_max_depth_m = 0.0;
+  EXPECT_EQ(rowsMarkedFromAStandstill(config), 0);
+}
+
+// It explores towards the painted wall and stops short of it, without a collision.
+void expectStopsShortOfThePaintedWall(const ExplorationConfig& config, const std::string& name) {
+  SCOPED_TRACE(name);
+  const World world = loadWorld(mrpt::config::CConfigFileMemory(kCorridor), "corridor.ini");
+  const std::string directory = std::string(STEREONAV_BINARY_DIR) + "/test_outputs/closed_loop/unmatched_wall";
+  std::filesystem::create_directories(directory);
+  ExplorationJob job;
+  job.output_prefix = directory + "/" + name;
+  job.max_time_s = 90.0;
+  const ExplorationReport report = runExploration(world, config, job);
+  EXPECT_EQ(report.collisions, 0) << report.summary();
+  // It drove down the corridor, and its body stayed short of the painted wall's face (the
+  // true poses, x y yaw per line after the time).
+  std::ifstream truth(job.output_prefix + ".truth.txt");
+  double farthest = 0.0;
+  for (std::string line; std::getline(truth, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream fields(line);
+    double time = 0.0, x = 0.0;
+    fields >> time >> x;
+    farthest = std::max(farthest, x);
+  }
+  EXPECT_GT(farthest, 2.0) << report.summary();
+  EXPECT_LT(farthest + config.simulator.robot.radius_m, kEndWallFace) << report.summary();
+}
+
+TEST(UnmatchedWallTest, TheExplorerStopsShortOfAFlatPaintedWall) {
+  ExplorationConfig config = loadExplorationConfig(testing::shippedExplorationConfigPath());
+  expectStopsShortOfThePaintedWall(config, "corridor");
+  config.mapping.projection.floor_end_max_depth_m = 2.0;
+  expectStopsShortOfThePaintedWall(config, "corridor_floor_end");
+}
+
+}  // namespace
+}  // namespace stereonav
