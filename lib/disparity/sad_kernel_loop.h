@@ -210,9 +210,9 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
     padding[chunk - whole_chunks] = cv::vx_load(pad);
   }
 
-  // Per channel and camera: where row yy's candidates start and (per camera) the step from pixel to
+  // Per camera and channel: where row yy's candidates start and (per camera) the step from pixel to
   // pixel; for Birchfield-Tomasi also the candidates' sampling intervals (same addresses in their
-  // images) and the reference's along that camera's baseline.
+  // images) and the reference's along that camera's baseline. The reference's row per channel.
   const uchar* reference_rows[kMaxChannels];
   const uchar* candidates[kMaxCameras][kMaxChannels];
   const uchar* candidate_lows[kMaxCameras][kMaxChannels];
@@ -259,13 +259,13 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
       for (int xe = 0; xe < nx; ++xe) {
         const int x = x0 - r + xe;
         cv::v_uint8 reference[kChannels];
-        cv::v_uint8 reference_low[kChannels][kMaxCameras], reference_high[kChannels][kMaxCameras];
+        cv::v_uint8 reference_low[kMaxCameras][kChannels], reference_high[kMaxCameras][kChannels];
         for (int k = 0; k < kChannels; ++k) {
           reference[k] = cv::vx_setall_u8(reference_rows[k][x]);
           if constexpr (kBirchfieldTomasi) {
             for (int c = first; c < last; ++c) {
-              reference_low[k][c] = cv::vx_setall_u8(reference_low_rows[c][k][x]);
-              reference_high[k][c] = cv::vx_setall_u8(reference_high_rows[c][k][x]);
+              reference_low[c][k] = cv::vx_setall_u8(reference_low_rows[c][k][x]);
+              reference_high[c][k] = cv::vx_setall_u8(reference_high_rows[c][k][x]);
             }
           }
         }
@@ -282,7 +282,7 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
               const cv::v_uint8 to_candidate = cv::v_max(reference[k] - cv::vx_load(candidate_highs[c][k] + offset),
                                                          cv::vx_load(candidate_lows[c][k] + offset) - reference[k]);
               const cv::v_uint8 to_reference =
-                  cv::v_max(candidate - reference_high[k][c], reference_low[k][c] - candidate);
+                  cv::v_max(candidate - reference_high[c][k], reference_low[c][k] - candidate);
               channel_cost = cv::v_min(to_candidate, to_reference);
             } else {
               channel_cost = cv::v_absdiff(reference[k], candidate);
