@@ -46,7 +46,8 @@ DisparityInterval bodyVolumeInterval(double k, double mount_z, const ProjectionO
 ColumnProjector::ColumnProjector(const CameraRig& rig, const ProjectionOptions& options)
     : mount_z_(rig.pose_on_robot.z()),
       floor_clearance_(options.floor_clearance_m),
-      floor_end_min_disparity_(options.floor_end_max_depth_m > 0.0
+      // A camera at or below the floor sees no floor to end.
+      floor_end_min_disparity_(options.floor_end_max_depth_m > 0.0 && mount_z_ > 0.0
                                    ? rig.disparityForDepth(options.floor_end_max_depth_m)
                                    : 0.0),
       surface_band_px_(options.surface_band_px),
