@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 #include <mrpt/config/CConfigFileMemory.h>
 
+#include <string>
+
 namespace stereonav {
 namespace {
 
@@ -21,22 +23,20 @@ TEST(ProjectionOptionsTest, LoadsEveryKey) {
   EXPECT_DOUBLE_EQ(options.scan_max_range_m, 6.0);
 }
 
-TEST(ProjectionOptionsTest, FloorEndIsOffByDefaultAndNotNegative) {
+// A depth limit that is off (0) when its key is absent and rejects a negative value.
+void expectOffByDefaultAndNotNegative(const std::string& key, double ProjectionOptions::*member) {
+  SCOPED_TRACE(key);
   mrpt::config::CConfigFileMemory defaults("[projection]\n");
   IniSection default_section(defaults, "projection");
-  EXPECT_EQ(loadProjectionOptions(default_section).floor_end_max_depth_m, 0.0);
-  mrpt::config::CConfigFileMemory config("[projection]\nfloor_end_max_depth_m = -1\n");
+  EXPECT_EQ(loadProjectionOptions(default_section).*member, 0.0);
+  mrpt::config::CConfigFileMemory config("[projection]\n" + key + " = -1\n");
   IniSection section(config, "projection");
   EXPECT_THROW(loadProjectionOptions(section), ConfigError);
 }
 
-TEST(ProjectionOptionsTest, MaxDepthIsOffByDefaultAndNotNegative) {
-  mrpt::config::CConfigFileMemory defaults("[projection]\n");
-  IniSection default_section(defaults, "projection");
-  EXPECT_EQ(loadProjectionOptions(default_section).max_depth_m, 0.0);
-  mrpt::config::CConfigFileMemory config("[projection]\nmax_depth_m = -1\n");
-  IniSection section(config, "projection");
-  EXPECT_THROW(loadProjectionOptions(section), ConfigError);
+TEST(ProjectionOptionsTest, DepthLimitsAreOffByDefaultAndNotNegative) {
+  expectOffByDefaultAndNotNegative("max_depth_m", &ProjectionOptions::max_depth_m);
+  expectOffByDefaultAndNotNegative("floor_end_max_depth_m", &ProjectionOptions::floor_end_max_depth_m);
 }
 
 TEST(ProjectionOptionsTest, SurfaceBandIsOffByDefaultAndNotNegative) {

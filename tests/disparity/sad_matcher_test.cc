@@ -586,13 +586,20 @@ void expectPathsMatchBruteForce(const std::vector<SecondaryCamera>& cameras, Ste
   }
 }
 
-TEST(SadMatcherTest, ScanlineEqualsThePathsComputedTheSlowWay) {
+// A 3x3 window, 13 candidates (the last vector partly padding) and jump costs of 2 and 9: the
+// scores of the scanline's two paths and of the five semi-global ones fit 16 bits.
+StereoOptions smallPathOptions(CostAggregation aggregation) {
   StereoOptions options = matchOptions();
   options.window = 3;
-  options.max_disparity = 12;  // 13 candidates: the last vector is partly padding
+  options.max_disparity = 12;
   options.scanline_p1 = 2;
-  options.scanline_p2 = 9;     // small enough for 16-bit scores
-  options.aggregation = CostAggregation::kScanline;
+  options.scanline_p2 = 9;
+  options.aggregation = aggregation;
+  return options;
+}
+
+TEST(SadMatcherTest, ScanlineEqualsThePathsComputedTheSlowWay) {
+  const StereoOptions options = smallPathOptions(CostAggregation::kScanline);
   expectPathsMatchBruteForce({{1, 0}}, options, 12, 70);
   expectPathsMatchBruteForce({{-1, 0}}, options, 0, 58);
 }
@@ -608,12 +615,7 @@ TEST(SadMatcherTest, ScanlineEqualsTheSlowWayWithWideScoresAndSeveralCameras) {
 }
 
 TEST(SadMatcherTest, SemiGlobalEqualsTheFivePathsComputedTheSlowWay) {
-  StereoOptions options = matchOptions();
-  options.window = 3;
-  options.max_disparity = 12;
-  options.scanline_p1 = 2;
-  options.scanline_p2 = 9;  // 5 * (9 * 255 + 9 * 9) fits 16-bit scores
-  options.aggregation = CostAggregation::kSemiGlobal;
+  StereoOptions options = smallPathOptions(CostAggregation::kSemiGlobal);  // 5 * (9 * 255 + 9 * 9) fits
   options.threads = 3;      // the paths from above still run down the whole image
   expectPathsMatchBruteForce({{1, 0}}, options, 12, 70);
   expectPathsMatchBruteForce({{-1, 0}}, options, 0, 58);
@@ -622,13 +624,8 @@ TEST(SadMatcherTest, SemiGlobalEqualsTheFivePathsComputedTheSlowWay) {
 }
 
 TEST(SadMatcherTest, BirchfieldTomasiWithSemiGlobalPathsEqualsTheSlowWay) {
-  StereoOptions options = matchOptions();
-  options.window = 3;
-  options.max_disparity = 12;
-  options.scanline_p1 = 2;
-  options.scanline_p2 = 9;
+  StereoOptions options = smallPathOptions(CostAggregation::kSemiGlobal);
   options.pixel_cost = PixelCost::kBirchfieldTomasi;
-  options.aggregation = CostAggregation::kSemiGlobal;
   expectPathsMatchBruteForce({{1, 0}}, options, 12, 70);
 }
 
@@ -666,13 +663,8 @@ TEST(SadMatcherTest, IntensityTermWithPathsEqualsTheSlowWay) {
 // left-right check's reverse match run across the whole row, and a best candidate off the image
 // leaves the pixel without a disparity.
 TEST(SadMatcherTest, PartialCandidatesMatchTheEdgeBandTheSlowWay) {
-  StereoOptions options = matchOptions();
-  options.window = 3;
-  options.max_disparity = 12;
-  options.scanline_p1 = 2;
-  options.scanline_p2 = 9;
+  StereoOptions options = smallPathOptions(CostAggregation::kScanline);
   options.partial_candidates = true;
-  options.aggregation = CostAggregation::kScanline;
   expectPathsMatchBruteForce({{1, 0}}, options, 0, 70);
   expectPathsMatchBruteForce({{-1, 0}}, options, 0, 70);
   // Columns 0-3 miss even the nearest candidate; the margin covers the band's farthest reads.
