@@ -2,6 +2,7 @@
 // configuration, scored against the simulator's true map.
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <iostream>
@@ -22,8 +23,12 @@ const std::string kSourceDir = STEREONAV_SOURCE_DIR;
 class OfficeRunTest : public ::testing::Test {
  protected:
   void SetUp() override {
+    // One directory per test and process: ctest runs these tests as parallel processes, and gtest's
+    // random seed, which named it before, can be the same in two of them; one's TearDown then
+    // removed the other's outputs while it wrote them (seen once in CI).
     directory_ = fs::temp_directory_path() /
-                 ("office_run_test_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()));
+                 ("office_run_test_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
+                  "_" + std::to_string(::getpid()));
     fs::create_directories(directory_);
   }
   void TearDown() override { fs::remove_all(directory_); }
