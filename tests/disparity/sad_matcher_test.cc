@@ -615,8 +615,8 @@ TEST(SadMatcherTest, ScanlineEqualsTheSlowWayWithWideScoresAndSeveralCameras) {
 }
 
 TEST(SadMatcherTest, SemiGlobalEqualsTheFivePathsComputedTheSlowWay) {
-  StereoOptions options = smallPathOptions(CostAggregation::kSemiGlobal);  // 5 * (9 * 255 + 9 * 9) fits
-  options.threads = 3;      // the paths from above still run down the whole image
+  StereoOptions options = smallPathOptions(CostAggregation::kSemiGlobal);
+  options.threads = 3;  // the paths from above still run down the whole image
   expectPathsMatchBruteForce({{1, 0}}, options, 12, 70);
   expectPathsMatchBruteForce({{-1, 0}}, options, 0, 58);
   options.window = 5;  // 5 * (25 * 255 + 9 * 25) > 32767: 32-bit scores
