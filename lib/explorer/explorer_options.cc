@@ -79,6 +79,7 @@ ExplorerOptions loadExplorerOptions(IniSection& section) {
   options.look_around_turn_rate = section.getPositive("look_around_turn_rate", options.look_around_turn_rate);
   options.stuck_timeout_s = section.getPositive("stuck_timeout_s", options.stuck_timeout_s);
   options.guard_margin_m = section.getNonNegative("guard_margin_m", options.guard_margin_m);
+  options.pass_beside_speed_mps = section.getPositive("pass_beside_speed_mps", options.pass_beside_speed_mps);
   options.obstacle_memory_range_m = section.getNonNegative("obstacle_memory_range_m", options.obstacle_memory_range_m);
   options.obstacle_memory_blind_m = section.getNonNegative("obstacle_memory_blind_m", options.obstacle_memory_blind_m);
   options.obstacle_memory_min_g = section.getInt("obstacle_memory_min_g", options.obstacle_memory_min_g);

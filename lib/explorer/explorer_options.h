@@ -66,6 +66,9 @@ struct ExplorerOptions {
   // senseObstacles) and of the remembered near obstacles along the commanded arc, whatever the
   // map says.
   double guard_margin_m = 0.1;
+  // What the body would pass clear of but within the margin (a door jamb) slows the robot to this
+  // speed instead of holding it: a door 0.8 m wide leaves a body 0.6 m wide 0.1 m each side.
+  double pass_beside_speed_mps = 0.15;
   // Obstacle points the scans show within obstacle_memory_range_m are obstacles for the planner
   // and the guard until a later scan sees past them from at least obstacle_memory_blind_m away
   // (near_obstacle_memory.h): far views see under chair seats and table tops (paper section 6.1).
@@ -153,7 +156,7 @@ struct ExplorerOptions {
 // pocket_penalty_m, looked_at_range_m, field_of_view_deg,
 // seen_free_range_m,
 // max_speed_mps, max_turn_rate, braking_deceleration, heading_gain, turn_in_place_deg,
-// lookahead_m, initial_look_around, look_around_turn_rate, stuck_timeout_s, guard_margin_m,
+// lookahead_m, initial_look_around, look_around_turn_rate, stuck_timeout_s, guard_margin_m, pass_beside_speed_mps,
 // obstacle_memory_range_m, obstacle_memory_blind_m, obstacle_memory_min_g,
 // guard_horizon_m, stop_gap_m, scan_memory_s, held_speed_mps, holding_depth_m,
 // blocked_command_mps, blocked_speed_mps, blocked_s, back_off_speed_mps, back_off_s,

@@ -8,16 +8,26 @@ namespace stereonav {
 
 // How far the robot's disc (radius `radius_m`, centred on the robot frame's origin) can travel
 // along the arc that `speed_mps` and `turn_rate` describe, forwards or backwards, before it
-// comes within `margin_m` of one of `obstacles` (robot frame: x ahead, y to the left);
-// `horizon_m` when nothing is in the way that soon. Turning on the spot sweeps no new ground:
-// horizon_m. A point already within the margin is judged by the bare disc, so that the robot may
-// still pass beside it (a door jamb) or move away; a point already under the bare disc stops it
-// (0) if it lies on the side the robot is moving towards, and is ignored if it lies behind.
+// comes within `margin_m` of one of `obstacles` (robot frame: x ahead, y to the left), split by
+// what the bare disc would do there:
+//   - to_contact_m: points the bare disc would run into along the arc;
+//   - beside_m: points the bare disc passes clear of, less than the margin away (a door jamb: a
+//     door 0.8 m wide leaves a body 0.6 m wide 0.1 m each side, less than a margin of 0.1 m can
+//     ever clear, so these may slow the robot but not hold it).
+// Each is `horizon_m` when nothing of its kind is in the way that soon. Turning on the spot sweeps
+// no new ground: horizon_m. A point already within the margin is judged by the bare disc alone,
+// so that the robot may move away from it; a point already under the bare disc stops it
+// (to_contact_m 0) if it lies on the side the robot is moving towards, and is ignored if it lies
+// behind.
 //
 // The reactive layer under the planner: the explorer brakes for what the newest stereo scans
 // show, whatever the map says (a table top far views have cleared, paper section 6.1; a person
 // walking in, section 3.4).
-double freeTravel(const std::vector<mrpt::math::TPoint2D>& obstacles, double radius_m, double margin_m,
-                  double speed_mps, double turn_rate, double horizon_m);
+struct FreeTravel {
+  double to_contact_m = 0.0;
+  double beside_m = 0.0;
+};
+FreeTravel freeTravel(const std::vector<mrpt::math::TPoint2D>& obstacles, double radius_m, double margin_m,
+                      double speed_mps, double turn_rate, double horizon_m);
 
 }  // namespace stereonav

@@ -70,16 +70,20 @@ VelocityCommand SafetyGuard::guard(VelocityCommand command, const mrpt::poses::C
   for (const mrpt::math::TPoint2D& point : near_obstacles_.points()) add(point);
   const double radius = options_.robot_radius_m, margin = options_.guard_margin_m;
   const double horizon = options_.guard_horizon_m;
-  const double free = stereonav::freeTravel(local, radius, margin, command.speed, command.turn_rate, horizon);
-  free_travel_m_ = free;
-  const double allowed =
-      std::sqrt(2.0 * options_.braking_deceleration * std::max(0.0, free - options_.stop_gap_m));
+  const FreeTravel free = stereonav::freeTravel(local, radius, margin, command.speed, command.turn_rate, horizon);
+  free_travel_m_ = std::min(free.to_contact_m, free.beside_m);
+  const auto braking = [&](double travel) {
+    return std::sqrt(2.0 * options_.braking_deceleration * std::max(0.0, travel - options_.stop_gap_m));
+  };
+  const double allowed_to_contact = braking(free.to_contact_m);
+  const double allowed = std::min(allowed_to_contact, std::max(options_.pass_beside_speed_mps, braking(free.beside_m)));
   if (std::abs(command.speed) <= allowed) return command;
-  if (allowed < options_.held_speed_mps) {
+  if (allowed_to_contact < options_.held_speed_mps) {
     std::vector<mrpt::math::TPoint2D> holding;
     for (const mrpt::math::TPoint2D& point : local) {
-      const double travel = stereonav::freeTravel({point}, radius, margin, command.speed, command.turn_rate, horizon);
-      if (travel <= free + options_.holding_depth_m) holding.push_back(composed(pose, point));
+      const double travel =
+          stereonav::freeTravel({point}, radius, margin, command.speed, command.turn_rate, horizon).to_contact_m;
+      if (travel <= free.to_contact_m + options_.holding_depth_m) holding.push_back(composed(pose, point));
     }
     near_obstacles_.remember(holding);
   }

@@ -31,8 +31,10 @@ class SafetyGuard {
                 const NavigationGrid* map);
 
   // `command` slowed so that the body, widened by guard_margin_m, can brake to a stop stop_gap_m
-  // short of the sensed and remembered obstacles along its arc (free_travel.h). A command held
-  // below held_speed_mps remembers what holds it as near obstacles.
+  // short of the sensed and remembered obstacles it would run into along its arc
+  // (free_travel.h); what it would pass clear of but within the margin slows it to
+  // pass_beside_speed_mps at most. A command held below held_speed_mps remembers what holds it as
+  // near obstacles.
   VelocityCommand guard(VelocityCommand command, const mrpt::poses::CPose2D& pose);
   // The free travel along the last guarded command's arc (guard_horizon_m when nothing is in the
   // way, or for a command that does not move).

@@ -70,7 +70,8 @@ TEST(ExplorationRunTest, ExploresASmallRoomWithoutCollisionAndTheRecordedRunRepl
   EXPECT_GE(report.coverage.coverage, 0.7) << report.summary();
   EXPECT_GT(report.coverage.reachable_free_m2, 7.0);
   EXPECT_LT(report.coverage.reachable_free_m2, 9.4);
-  EXPECT_GT(report.distance_m, 2.0);
+  // It drove to see past the crate and the partition, not only turned on the spot.
+  EXPECT_GT(report.distance_m, 1.0);
   EXPECT_LE(report.top_speed_mps, config.explorer.max_speed_mps + 1e-9);
   EXPECT_NEAR(static_cast<double>(report.frames), report.sim_time_s * config.simulator.simulation.frame_rate_hz, 1.0);
 

@@ -43,6 +43,27 @@ TEST(SafetyGuardTest, StopsForAnObstacleWithinTheStopGapAndRemembersIt) {
   EXPECT_NEAR(guard.nearObstacles().points()[0].x, 0.65, 0.05);
 }
 
+TEST(SafetyGuardTest, SlowsButDoesNotHoldTheRobotInADoorNarrowerThanBodyAndMargins) {
+  KinematicRobot robot({0.0, 0.0, 0.0});
+  robot.time_ = 1.0;  // its scans are stamped 1 s into the run
+  // The jambs of a door 0.8 m wide, 0.4 m ahead, the robot 0.05 m left of its centre line: the body
+  // passes 0.05 m clear of the right jamb, less than the margin.
+  robot.sensed_ = {{0.4, 0.45}, {0.4, -0.35}};
+  SafetyGuard guard(options());
+  guard.readScan(robot, mrpt::poses::CPose2D(), 0.0, nullptr);
+  // The widened disc meets the right jamb after 0.4 - sqrt(0.4^2 - 0.35^2) = 0.206 m, inside the
+  // stop gap: it slows to pass_beside_speed_mps, and nothing is remembered as holding it.
+  const VelocityCommand allowed = guard.guard({1.0, 0.0}, mrpt::poses::CPose2D());
+  EXPECT_NEAR(guard.freeTravel(), 0.4 - std::sqrt(0.0375), 1e-6);
+  EXPECT_EQ(allowed.speed, options().pass_beside_speed_mps);
+  EXPECT_TRUE(guard.nearObstacles().points().empty());
+  // A wall ahead within the stop gap (0.65 - 0.4 = 0.25 m of free travel) still holds it.
+  robot.sensed_ = {{0.4, 0.45}, {0.4, -0.35}, {0.65, 0.0}};
+  robot.time_ = 1.5;  // a new scan
+  guard.readScan(robot, mrpt::poses::CPose2D(), 0.2, nullptr);
+  EXPECT_EQ(guard.guard({1.0, 0.0}, mrpt::poses::CPose2D()).speed, 0.0);
+}
+
 TEST(SafetyGuardTest, PassesCommandsAwayFromTheObstacleAndTurnsOnTheSpot) {
   KinematicRobot robot({0.0, 0.0, 0.0});
   robot.time_ = 1.0;  // its scans are stamped 1 s into the run
