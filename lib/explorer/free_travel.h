@@ -12,8 +12,8 @@ namespace stereonav {
 // what the bare disc would do there:
 //   - to_contact_m: points the bare disc would run into along the arc;
 //   - beside_m: points the bare disc passes clear of, less than the margin away (a door jamb: a
-//     door 0.8 m wide leaves a body 0.6 m wide 0.1 m each side, less than a margin of 0.1 m can
-//     ever clear, so these may slow the robot but not hold it).
+//     door 0.8 m wide leaves a body 0.6 m wide 0.1 m each side, no more than the margin, so these
+//     may slow the robot but must not hold it).
 // Each is `horizon_m` when nothing of its kind is in the way that soon. Turning on the spot sweeps
 // no new ground: horizon_m. A point already within the margin is judged by the bare disc alone,
 // so that the robot may move away from it; a point already under the bare disc stops it
