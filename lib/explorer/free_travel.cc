@@ -53,6 +53,10 @@ FreeTravel freeTravel(const std::vector<mrpt::math::TPoint2D>& obstacles, double
     const double bare = travelTo(px, py, radius_m, turn_radius, horizon_m);
     if (px * px + py * py < wide * wide) {
       free.to_contact_m = std::min(free.to_contact_m, bare);
+      // Still ahead: the robot keeps creeping until it has passed it. The bare disc's sweep alone
+      // let it speed up here, into the unseen rest of what the point belongs to (a table's edge
+      // beside the body, out of the cameras' view).
+      if (px > 0.0) free.beside_m = 0.0;
       continue;
     }
     double& kind = bare < horizon_m ? free.to_contact_m : free.beside_m;

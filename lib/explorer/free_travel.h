@@ -16,9 +16,10 @@ namespace stereonav {
 //     may slow the robot but must not hold it).
 // Each is `horizon_m` when nothing of its kind is in the way that soon. Turning on the spot sweeps
 // no new ground: horizon_m. A point already within the margin is judged by the bare disc alone,
-// so that the robot may move away from it; a point already under the bare disc stops it
-// (to_contact_m 0) if it lies on the side the robot is moving towards, and is ignored if it lies
-// behind.
+// so that the robot may move away from it, and while it lies on the side the robot is moving
+// towards it also counts as beside at 0 (the robot creeps until it has passed it); a point
+// already under the bare disc stops it (to_contact_m 0) if it lies on the side the robot is
+// moving towards, and is ignored if it lies behind.
 //
 // The reactive layer under the planner: the explorer brakes for what the newest stereo scans
 // show, whatever the map says (a table top far views have cleared, paper section 6.1; a person

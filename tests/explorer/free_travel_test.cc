@@ -77,11 +77,17 @@ TEST(FreeTravel, WhatTheBodyPassesClearOfButWithinTheMarginCountsApart) {
   const FreeTravel door = freeTravel({{1.0, 0.45}, {1.0, -0.35}, {3.0, 0.0}}, kRadius, kMargin, 1.0, 0.0, kHorizon);
   EXPECT_NEAR(door.to_contact_m, 2.6, 1e-12);
   EXPECT_NEAR(door.beside_m, 1.0 - std::sqrt(0.0375), 1e-12);
-  // A jamb already 0.38 to the left, slightly ahead: within the margin now, so only the bare disc
-  // counts, and it passes 0.08 clear.
+  // A jamb already 0.38 to the left, slightly ahead: within the margin now, so the bare disc
+  // decides contact, and it passes 0.08 clear; but until the jamb is behind the robot it counts
+  // as beside at once, so the robot keeps creeping. Once behind, it no longer counts.
   const FreeTravel within = freeTravel({{0.05, 0.38}}, kRadius, kMargin, 1.0, 0.0, kHorizon);
   EXPECT_EQ(within.to_contact_m, kHorizon);
-  EXPECT_EQ(within.beside_m, kHorizon);
+  EXPECT_EQ(within.beside_m, 0.0);
+  const FreeTravel passed = freeTravel({{-0.05, 0.38}}, kRadius, kMargin, 1.0, 0.0, kHorizon);
+  EXPECT_EQ(passed.to_contact_m, kHorizon);
+  EXPECT_EQ(passed.beside_m, kHorizon);
+  // Reversing, "ahead" is behind the robot: the jamb ahead of it no longer slows it.
+  EXPECT_EQ(freeTravel({{0.05, 0.38}}, kRadius, kMargin, -1.0, 0.0, kHorizon).beside_m, kHorizon);
   // On an arc the same split holds: turning left on a circle of radius 2 about (0, 2), a point
   // 2.35 from the centre of rotation is 0.35 outside the centre's circle.
   const double angle = 0.8;

@@ -57,6 +57,10 @@ TEST(SafetyGuardTest, SlowsButDoesNotHoldTheRobotInADoorNarrowerThanBodyAndMargi
   EXPECT_NEAR(guard.freeTravel(), 0.4 - std::sqrt(0.0375), 1e-6);
   EXPECT_EQ(allowed.speed, options().pass_beside_speed_mps);
   EXPECT_TRUE(guard.nearObstacles().points().empty());
+  // 0.35 m on, the right jamb is 0.05 m ahead and sqrt(0.05^2 + 0.35^2) = 0.354 m off, within
+  // the margin: the bare body passes it, but the robot keeps creeping until it is behind.
+  EXPECT_EQ(guard.guard({1.0, 0.0}, mrpt::poses::CPose2D(0.35, 0.0, 0.0)).speed, options().pass_beside_speed_mps);
+  EXPECT_EQ(guard.guard({1.0, 0.0}, mrpt::poses::CPose2D(0.45, 0.0, 0.0)).speed, 1.0);
   // A wall ahead within the stop gap (0.65 - 0.4 = 0.25 m of free travel) still holds it.
   robot.sensed_ = {{0.4, 0.45}, {0.4, -0.35}, {0.65, 0.0}};
   robot.time_ = 1.5;  // a new scan
