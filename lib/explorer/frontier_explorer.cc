@@ -108,8 +108,9 @@ VelocityCommand FrontierExplorer::command(const mrpt::poses::CPose2D& pose, doub
                                           mrpt::nav::CRobot2NavInterface& robot) {
   if (status_.phase == ExplorerPhase::kBackingOff && time_s < back_off_until_) return backOff(pose);
   if (status_.phase == ExplorerPhase::kBackingOff) status_.phase = ExplorerPhase::kTurning;
+  path_end_m_.reset();
   const VelocityCommand wanted = decide(pose, time_s);
-  const VelocityCommand command = guarded(wanted, pose);
+  const VelocityCommand command = guarded(wanted, pose, path_end_m_);
   if (guard_.blocked(wanted.speed, speed, time_s) && !finished()) return onBlocked(pose, command, time_s, robot);
   return command;
 }
@@ -131,8 +132,9 @@ VelocityCommand FrontierExplorer::onBlocked(const mrpt::poses::CPose2D& pose, co
   return backOff(pose);
 }
 
-VelocityCommand FrontierExplorer::guarded(const VelocityCommand& command, const mrpt::poses::CPose2D& pose) {
-  const VelocityCommand allowed = guard_.guard(command, pose);
+VelocityCommand FrontierExplorer::guarded(const VelocityCommand& command, const mrpt::poses::CPose2D& pose,
+                                          std::optional<double> path_end_m) {
+  const VelocityCommand allowed = guard_.guard(command, pose, path_end_m);
   status_.free_travel_m = guard_.freeTravel();
   return allowed;
 }
@@ -199,6 +201,7 @@ VelocityCommand FrontierExplorer::decide(const mrpt::poses::CPose2D& pose, doubl
   const MotionController::Drive drive =
       motion_.drive(pose, path, *grid_, status_.phase == ExplorerPhase::kDriving);
   status_.phase = drive.driving ? ExplorerPhase::kDriving : ExplorerPhase::kTurning;
+  path_end_m_ = drive.path_length_m;
   return drive.command;
 }
 

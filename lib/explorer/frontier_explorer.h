@@ -75,7 +75,8 @@ class FrontierExplorer {
   VelocityCommand lookAtFrontier(const mrpt::poses::CPose2D& pose, int col, int row, double time_s);
   VelocityCommand lookAround(const mrpt::poses::CPose2D& pose);
   VelocityCommand backOff(const mrpt::poses::CPose2D& pose);
-  VelocityCommand guarded(const VelocityCommand& command, const mrpt::poses::CPose2D& pose);
+  VelocityCommand guarded(const VelocityCommand& command, const mrpt::poses::CPose2D& pose,
+                          std::optional<double> path_end_m = std::nullopt);
   // Blocked though told to drive: remembers what holds it and starts backing off.
   VelocityCommand onBlocked(const mrpt::poses::CPose2D& pose, const VelocityCommand& guarded_command, double time_s,
                             mrpt::nav::CRobot2NavInterface& robot);
@@ -113,6 +114,8 @@ class FrontierExplorer {
   // Escape targets the robot was blocked on the way to, since it last stood where its body fits.
   std::vector<cv::Point2d> failed_escapes_;
   double back_off_until_ = 0.0;
+  // How far along its path the robot is to stop, while the cycle's command follows a path.
+  std::optional<double> path_end_m_;
   ExplorerStatus status_;
   std::string stop_reason_;
 };

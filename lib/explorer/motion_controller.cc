@@ -47,8 +47,10 @@ MotionController::Drive MotionController::drive(const mrpt::poses::CPose2D& pose
     }
   }
   const double error = headingError(pose, carrot.x, carrot.y);
-  if (!driving && std::abs(error) > options_.facing_tolerance_rad) return {turnTowards(pose, carrot.x, carrot.y), false};
-  if (std::abs(error) > options_.turn_in_place_rad) return {turnTowards(pose, carrot.x, carrot.y), false};
+  if (!driving && std::abs(error) > options_.facing_tolerance_rad) {
+    return {turnTowards(pose, carrot.x, carrot.y), false, remaining};
+  }
+  if (std::abs(error) > options_.turn_in_place_rad) return {turnTowards(pose, carrot.x, carrot.y), false, remaining};
   int col = 0, row = 0;
   grid.cellAt(pose.x(), pose.y(), col, row);
   const double body_radius = options_.robot_radius_m + options_.safety_margin_m;
@@ -61,7 +63,7 @@ MotionController::Drive MotionController::drive(const mrpt::poses::CPose2D& pose
   const double heading_share = error / options_.turn_in_place_rad;
   double speed = options_.max_speed_mps * room_factor * (1.0 - 0.7 * heading_share * heading_share);
   speed = std::min(speed, std::sqrt(2.0 * options_.braking_deceleration * remaining));
-  return {{speed, clampAbs(options_.heading_gain * error, options_.max_turn_rate)}, true};
+  return {{speed, clampAbs(options_.heading_gain * error, options_.max_turn_rate)}, true, remaining};
 }
 
 std::optional<VelocityCommand> MotionController::lookAround(const mrpt::poses::CPose2D& pose, bool continuing) {

@@ -30,6 +30,7 @@ class MotionController {
   struct Drive {
     VelocityCommand command;
     bool driving = false;  // false: turning on the spot to face the path first
+    double path_length_m = 0.0;
   };
   // Following `path` (grid cells, the robot's first): a robot not yet driving first faces the
   // carrot; one driving turns on the spot again past turn_in_place_rad. Slower near obstacles,

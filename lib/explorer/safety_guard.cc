@@ -55,7 +55,8 @@ void SafetyGuard::readScan(mrpt::nav::CRobot2NavInterface& robot, const mrpt::po
   }
 }
 
-VelocityCommand SafetyGuard::guard(VelocityCommand command, const mrpt::poses::CPose2D& pose) {
+VelocityCommand SafetyGuard::guard(VelocityCommand command, const mrpt::poses::CPose2D& pose,
+                                   std::optional<double> path_end_m) {
   free_travel_m_ = options_.guard_horizon_m;
   if (command.speed == 0.0) return command;
   const double reach = this->reach();
@@ -75,7 +76,10 @@ VelocityCommand SafetyGuard::guard(VelocityCommand command, const mrpt::poses::C
   const auto braking = [&](double travel) {
     return std::sqrt(2.0 * options_.braking_deceleration * std::max(0.0, travel - options_.stop_gap_m));
   };
-  const double allowed_to_contact = braking(free.to_contact_m);
+  const bool fits_at_path_end =
+      path_end_m && free.body_contact_m >= *path_end_m + options_.safety_margin_m && command.speed > 0.0;
+  const double allowed_to_contact =
+      fits_at_path_end ? std::max(braking(free.to_contact_m), options_.pass_beside_speed_mps) : braking(free.to_contact_m);
   const double allowed = std::min(allowed_to_contact, std::max(options_.pass_beside_speed_mps, braking(free.beside_m)));
   if (std::abs(command.speed) <= allowed) return command;
   if (allowed_to_contact < options_.held_speed_mps) {

@@ -7,6 +7,7 @@
 #include <opencv2/core.hpp>
 
 #include <deque>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -35,7 +36,12 @@ class SafetyGuard {
   // (free_travel.h); what it would pass clear of but within the margin slows it to
   // pass_beside_speed_mps at most. A command held below held_speed_mps remembers what holds it as
   // near obstacles.
-  VelocityCommand guard(VelocityCommand command, const mrpt::poses::CPose2D& pose);
+  // `path_end_m`: how far along its path the robot will stop anyway (the plan's goal). Where the
+  // bare body, plus the planner's safety_margin_m, fits there, the robot may creep the rest of
+  // the way at pass_beside_speed_mps: the stop gap is room to brake from speed, and the planner's
+  // goals near a frontier lie nearer obstacles than the gap (a goal by a door jamb).
+  VelocityCommand guard(VelocityCommand command, const mrpt::poses::CPose2D& pose,
+                        std::optional<double> path_end_m = std::nullopt);
   // The free travel along the last guarded command's arc (guard_horizon_m when nothing is in the
   // way, or for a command that does not move).
   double freeTravel() const { return free_travel_m_; }

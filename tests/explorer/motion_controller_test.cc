@@ -51,6 +51,7 @@ TEST(MotionControllerTest, DrivesAStraightPathAtTopSpeedAndBrakesForItsEnd) {
   // 3 m to go: braking allows sqrt(2 * 0.8 * 3) > 1.5, so top speed, straight on.
   EXPECT_NEAR(long_path.command.speed, 1.5, 1e-9);
   EXPECT_NEAR(long_path.command.turn_rate, 0.0, 1e-9);
+  EXPECT_NEAR(long_path.path_length_m, 3.0, 1e-9);
   // 0.4 m to go: sqrt(2 * 0.8 * 0.4) = 0.8.
   EXPECT_NEAR(motion.drive(at_start, straightPath(10, 14), grid, true).command.speed, 0.8, 1e-9);
 }

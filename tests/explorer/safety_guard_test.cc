@@ -68,6 +68,24 @@ TEST(SafetyGuardTest, SlowsButDoesNotHoldTheRobotInADoorNarrowerThanBodyAndMargi
   EXPECT_EQ(guard.guard({1.0, 0.0}, mrpt::poses::CPose2D()).speed, 0.0);
 }
 
+TEST(SafetyGuardTest, LetsTheRobotCreepToAPathEndWhereTheBodyAndSafetyMarginFit) {
+  KinematicRobot robot({0.0, 0.0, 0.0});
+  robot.time_ = 1.0;  // its scans are stamped 1 s into the run
+  // A jamb 0.6 m ahead and 0.2 m to the left: the widened disc meets it after
+  // 0.6 - sqrt(0.4^2 - 0.2^2) = 0.254 m, inside the stop gap; the bare body after
+  // 0.6 - sqrt(0.3^2 - 0.2^2) = 0.376 m.
+  robot.sensed_ = {{0.6, 0.2}};
+  SafetyGuard guard(options());
+  guard.readScan(robot, mrpt::poses::CPose2D(), 0.0, nullptr);
+  const mrpt::poses::CPose2D origin;
+  EXPECT_EQ(guard.guard({1.0, 0.0}, origin).speed, 0.0);
+  // The path ends 0.25 m on: the body plus the 0.1 m safety margin (0.35 m) stops short of the
+  // bare body's contact, so the robot creeps there.
+  EXPECT_EQ(guard.guard({1.0, 0.0}, origin, 0.25).speed, options().pass_beside_speed_mps);
+  // Ending 0.3 m on, the body and margin (0.4 m) would reach past the contact: held.
+  EXPECT_EQ(guard.guard({1.0, 0.0}, origin, 0.3).speed, 0.0);
+}
+
 TEST(SafetyGuardTest, PassesCommandsAwayFromTheObstacleAndTurnsOnTheSpot) {
   KinematicRobot robot({0.0, 0.0, 0.0});
   robot.time_ = 1.0;  // its scans are stamped 1 s into the run
