@@ -39,18 +39,19 @@ double travelTo(double px, double py, double radius_m, double turn_radius, doubl
 
 FreeTravel freeTravel(const std::vector<mrpt::math::TPoint2D>& obstacles, double radius_m, double margin_m,
                       double speed_mps, double turn_rate, double horizon_m) {
-  if (speed_mps == 0.0) return {horizon_m, horizon_m};
+  if (speed_mps == 0.0) return {horizon_m, horizon_m, horizon_m};
   // Mirror the frame so that the robot moves forwards (x) and turns left (y): the sweep is symmetric.
   const double x_sign = speed_mps > 0.0 ? 1.0 : -1.0;
   const double curvature = turn_rate / speed_mps;  // signed: left turn while moving forwards > 0
   const double y_sign = curvature * x_sign >= 0.0 ? 1.0 : -1.0;
   const double turn_radius = std::abs(curvature) < kStraightCurvature ? 0.0 : 1.0 / std::abs(curvature);
   const double wide = radius_m + margin_m;
-  FreeTravel free{horizon_m, horizon_m};
+  FreeTravel free{horizon_m, horizon_m, horizon_m};
   for (const mrpt::math::TPoint2D& obstacle : obstacles) {
     const double px = x_sign * obstacle.x;
     const double py = y_sign * obstacle.y;
     const double bare = travelTo(px, py, radius_m, turn_radius, horizon_m);
+    free.body_contact_m = std::min(free.body_contact_m, bare);
     if (px * px + py * py < wide * wide) {
       free.to_contact_m = std::min(free.to_contact_m, bare);
       // Still ahead: the robot keeps creeping until it has passed it. The bare disc's sweep alone
@@ -64,6 +65,7 @@ FreeTravel freeTravel(const std::vector<mrpt::math::TPoint2D>& obstacles, double
   }
   free.to_contact_m = std::max(0.0, free.to_contact_m);
   free.beside_m = std::max(0.0, free.beside_m);
+  free.body_contact_m = std::max(0.0, free.body_contact_m);
   return free;
 }
 

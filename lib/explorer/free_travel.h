@@ -14,6 +14,7 @@ namespace stereonav {
 //   - beside_m: points the bare disc passes clear of, less than the margin away (a door jamb: a
 //     door 0.8 m wide leaves a body 0.6 m wide 0.1 m each side, no more than the margin, so these
 //     may slow the robot but must not hold it).
+//   - body_contact_m: where the bare disc first touches any point along the arc, margin or not.
 // Each is `horizon_m` when nothing of its kind is in the way that soon. Turning on the spot sweeps
 // no new ground: horizon_m. A point already within the margin is judged by the bare disc alone,
 // so that the robot may move away from it, and while it lies on the side the robot is moving
@@ -27,6 +28,7 @@ namespace stereonav {
 struct FreeTravel {
   double to_contact_m = 0.0;
   double beside_m = 0.0;
+  double body_contact_m = 0.0;
 };
 FreeTravel freeTravel(const std::vector<mrpt::math::TPoint2D>& obstacles, double radius_m, double margin_m,
                       double speed_mps, double turn_rate, double horizon_m);

@@ -76,12 +76,8 @@ VelocityCommand SafetyGuard::guard(VelocityCommand command, const mrpt::poses::C
   const auto braking = [&](double travel) {
     return std::sqrt(2.0 * options_.braking_deceleration * std::max(0.0, travel - options_.stop_gap_m));
   };
-  // The planner's body (radius plus safety margin) swept along the arc, laterally as well as
-  // ahead: a pole beside a turning robot's goal, 0.31 m off its arc, let the bare body through.
   const bool fits_at_path_end =
-      path_end_m && command.speed > 0.0 &&
-      stereonav::freeTravel(local, radius + options_.safety_margin_m, 0.0, command.speed, command.turn_rate, horizon)
-              .to_contact_m >= *path_end_m;
+      path_end_m && free.body_contact_m >= *path_end_m + options_.safety_margin_m && command.speed > 0.0;
   const double allowed_to_contact =
       fits_at_path_end ? std::max(braking(free.to_contact_m), options_.pass_beside_speed_mps) : braking(free.to_contact_m);
   const double allowed = std::min(allowed_to_contact, std::max(options_.pass_beside_speed_mps, braking(free.beside_m)));

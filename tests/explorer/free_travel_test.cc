@@ -58,6 +58,8 @@ TEST(FreeTravel, TheMarginKeepsTheDiscFartherFromWhatItWouldRunInto) {
   const FreeTravel ahead = freeTravel({{2.0, 0.0}}, kRadius, kMargin, 1.0, 0.0, kHorizon);
   EXPECT_NEAR(ahead.to_contact_m, 1.6, 1e-12);
   EXPECT_EQ(ahead.beside_m, kHorizon);
+  // The bare disc itself touches it 0.3 short.
+  EXPECT_NEAR(ahead.body_contact_m, 1.7, 1e-12);
   // 0.2 off the centre line, under the bare body's path: the widened disc meets it
   // sqrt(0.4^2 - 0.2^2) before it.
   EXPECT_NEAR(freeTravel({{2.0, 0.2}}, kRadius, kMargin, 1.0, 0.0, kHorizon).to_contact_m, 2.0 - std::sqrt(0.12),
@@ -77,6 +79,8 @@ TEST(FreeTravel, WhatTheBodyPassesClearOfButWithinTheMarginCountsApart) {
   const FreeTravel door = freeTravel({{1.0, 0.45}, {1.0, -0.35}, {3.0, 0.0}}, kRadius, kMargin, 1.0, 0.0, kHorizon);
   EXPECT_NEAR(door.to_contact_m, 2.6, 1e-12);
   EXPECT_NEAR(door.beside_m, 1.0 - std::sqrt(0.0375), 1e-12);
+  // The bare disc touches neither jamb, only the wall.
+  EXPECT_NEAR(door.body_contact_m, 2.7, 1e-12);
   // A jamb already 0.38 to the left, slightly ahead: within the margin now, so the bare disc
   // decides contact, and it passes 0.08 clear; but until the jamb is behind the robot it counts
   // as beside at once, so the robot keeps creeping. Once behind, it no longer counts.

@@ -71,39 +71,19 @@ TEST(SafetyGuardTest, SlowsButDoesNotHoldTheRobotInADoorNarrowerThanBodyAndMargi
 TEST(SafetyGuardTest, LetsTheRobotCreepToAPathEndWhereTheBodyAndSafetyMarginFit) {
   KinematicRobot robot({0.0, 0.0, 0.0});
   robot.time_ = 1.0;  // its scans are stamped 1 s into the run
-  ExplorerOptions shipped = options();
-  shipped.safety_margin_m = 0.05;  // as in ini/explore_320x240.ini: the planner's body is 0.35 m
-  // A jamb 0.6 m ahead and 0.2 m to the left: the body widened by the guard margin (0.4 m) meets
-  // it after 0.6 - sqrt(0.4^2 - 0.2^2) = 0.254 m, inside the stop gap; the planner's body after
-  // 0.6 - sqrt(0.35^2 - 0.2^2) = 0.313 m.
+  // A jamb 0.6 m ahead and 0.2 m to the left: the widened disc meets it after
+  // 0.6 - sqrt(0.4^2 - 0.2^2) = 0.254 m, inside the stop gap; the bare body after
+  // 0.6 - sqrt(0.3^2 - 0.2^2) = 0.376 m.
   robot.sensed_ = {{0.6, 0.2}};
-  SafetyGuard guard(shipped);
+  SafetyGuard guard(options());
   guard.readScan(robot, mrpt::poses::CPose2D(), 0.0, nullptr);
   const mrpt::poses::CPose2D origin;
   EXPECT_EQ(guard.guard({1.0, 0.0}, origin).speed, 0.0);
-  // The path ends 0.3 m on, short of that: the robot creeps there.
-  EXPECT_EQ(guard.guard({1.0, 0.0}, origin, 0.3).speed, shipped.pass_beside_speed_mps);
-  // Ending 0.32 m on, past it: held.
-  EXPECT_EQ(guard.guard({1.0, 0.0}, origin, 0.32).speed, 0.0);
-}
-
-TEST(SafetyGuardTest, APathEndCountsOnlyWhereThePlannersBodyClearsWhatIsBesideTheWayThere) {
-  KinematicRobot robot({0.0, 0.0, 0.0});
-  robot.time_ = 1.0;  // its scans are stamped 1 s into the run
-  ExplorerOptions shipped = options();
-  shipped.safety_margin_m = 0.05;
-  // A wall point 0.65 m ahead holds the robot (the 0.4 m disc meets it after 0.25 m, inside the
-  // stop gap); the planner's 0.35 m body meets it after 0.3 m, past a path end 0.28 m on.
-  robot.sensed_ = {{0.65, 0.0}};
-  SafetyGuard alone(shipped);
-  alone.readScan(robot, mrpt::poses::CPose2D(), 0.0, nullptr);
-  EXPECT_EQ(alone.guard({1.0, 0.0}, mrpt::poses::CPose2D(), 0.28).speed, shipped.pass_beside_speed_mps);
-  // A pole 0.33 m to the left and 0.2 m ahead: the bare body passes it 0.03 m clear, but the
-  // planner's body meets it after 0.2 - sqrt(0.35^2 - 0.33^2) = 0.083 m, before the path end.
-  robot.sensed_ = {{0.65, 0.0}, {0.2, 0.33}};
-  SafetyGuard with_pole(shipped);
-  with_pole.readScan(robot, mrpt::poses::CPose2D(), 0.0, nullptr);
-  EXPECT_EQ(with_pole.guard({1.0, 0.0}, mrpt::poses::CPose2D(), 0.28).speed, 0.0);
+  // The path ends 0.25 m on: the body plus the 0.1 m safety margin (0.35 m) stops short of the
+  // bare body's contact, so the robot creeps there.
+  EXPECT_EQ(guard.guard({1.0, 0.0}, origin, 0.25).speed, options().pass_beside_speed_mps);
+  // Ending 0.3 m on, the body and margin (0.4 m) would reach past the contact: held.
+  EXPECT_EQ(guard.guard({1.0, 0.0}, origin, 0.3).speed, 0.0);
 }
 
 TEST(SafetyGuardTest, PassesCommandsAwayFromTheObstacleAndTurnsOnTheSpot) {
