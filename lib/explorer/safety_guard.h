@@ -37,9 +37,10 @@ class SafetyGuard {
   // pass_beside_speed_mps at most. A command held below held_speed_mps remembers what holds it as
   // near obstacles.
   // `path_end_m`: how far along its path the robot will stop anyway (the plan's goal). Where the
-  // bare body, plus the planner's safety_margin_m, fits there, the robot may creep the rest of
-  // the way at pass_beside_speed_mps: the stop gap is room to brake from speed, and the planner's
-  // goals near a frontier lie nearer obstacles than the gap (a goal by a door jamb).
+  // bare body, stopping there, is at least the planner's safety_margin_m short of what it would
+  // touch along the arc, the robot may creep the rest of the way at pass_beside_speed_mps: the
+  // stop gap is room to brake from speed, and the planner's goals near a frontier lie nearer
+  // obstacles than the gap (a goal by a door jamb).
   VelocityCommand guard(VelocityCommand command, const mrpt::poses::CPose2D& pose,
                         std::optional<double> path_end_m = std::nullopt);
   // The free travel along the last guarded command's arc (guard_horizon_m when nothing is in the

@@ -79,10 +79,10 @@ TEST(SafetyGuardTest, LetsTheRobotCreepToAPathEndWhereTheBodyAndSafetyMarginFit)
   guard.readScan(robot, mrpt::poses::CPose2D(), 0.0, nullptr);
   const mrpt::poses::CPose2D origin;
   EXPECT_EQ(guard.guard({1.0, 0.0}, origin).speed, 0.0);
-  // The path ends 0.25 m on: the body plus the 0.1 m safety margin (0.35 m) stops short of the
-  // bare body's contact, so the robot creeps there.
+  // The path ends 0.25 m on: stopping there, the bare body is 0.376 - 0.25 = 0.126 m short of
+  // the jamb, more than the 0.1 m safety margin, so the robot creeps there.
   EXPECT_EQ(guard.guard({1.0, 0.0}, origin, 0.25).speed, options().pass_beside_speed_mps);
-  // Ending 0.3 m on, the body and margin (0.4 m) would reach past the contact: held.
+  // Ending 0.3 m on, it would be 0.076 m short, less than the margin: held.
   EXPECT_EQ(guard.guard({1.0, 0.0}, origin, 0.3).speed, 0.0);
 }
 
