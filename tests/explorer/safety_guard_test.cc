@@ -14,12 +14,18 @@ using testing::KinematicRobot;
 // Defaults: body radius 0.3, guard margin 0.1, braking 0.8 m/s^2, stop gap 0.3, horizon 2.5.
 ExplorerOptions options() { return ExplorerOptions{}; }
 
-TEST(SafetyGuardTest, BrakesToStopTheGapShortOfAScanObstacleAhead) {
+// A guard that has read one scan showing `sensed` (robot frame), the robot at the origin.
+SafetyGuard guardAfterScan(const std::vector<mrpt::math::TPoint2D>& sensed) {
   KinematicRobot robot({0.0, 0.0, 0.0});
   robot.time_ = 1.0;  // its scans are stamped 1 s into the run
-  robot.sensed_ = {{1.2, 0.0}};
+  robot.sensed_ = sensed;
   SafetyGuard guard(options());
   guard.readScan(robot, mrpt::poses::CPose2D(), 0.0, nullptr);
+  return guard;
+}
+
+TEST(SafetyGuardTest, BrakesToStopTheGapShortOfAScanObstacleAhead) {
+  SafetyGuard guard = guardAfterScan({{1.2, 0.0}});
   const VelocityCommand allowed = guard.guard({1.5, 0.0}, mrpt::poses::CPose2D());
   // The body's edge plus margin meets the point after 1.2 - 0.3 - 0.1 = 0.8 m; braking at 0.8
   // m/s^2 to stop 0.3 m short of that allows sqrt(2 * 0.8 * 0.5).
@@ -32,11 +38,7 @@ TEST(SafetyGuardTest, BrakesToStopTheGapShortOfAScanObstacleAhead) {
 }
 
 TEST(SafetyGuardTest, StopsForAnObstacleWithinTheStopGapAndRemembersIt) {
-  KinematicRobot robot({0.0, 0.0, 0.0});
-  robot.time_ = 1.0;  // its scans are stamped 1 s into the run
-  robot.sensed_ = {{0.65, 0.0}};  // free travel 0.25 m, inside the 0.3 m gap
-  SafetyGuard guard(options());
-  guard.readScan(robot, mrpt::poses::CPose2D(), 0.0, nullptr);
+  SafetyGuard guard = guardAfterScan({{0.65, 0.0}});  // free travel 0.25 m, inside the 0.3 m gap
   EXPECT_EQ(guard.guard({1.0, 0.0}, mrpt::poses::CPose2D()).speed, 0.0);
   // What holds the robot is now a near obstacle, whatever a map says.
   ASSERT_EQ(guard.nearObstacles().points().size(), 1u);
@@ -69,14 +71,10 @@ TEST(SafetyGuardTest, SlowsButDoesNotHoldTheRobotInADoorNarrowerThanBodyAndMargi
 }
 
 TEST(SafetyGuardTest, LetsTheRobotCreepToAPathEndWhereTheBodyAndSafetyMarginFit) {
-  KinematicRobot robot({0.0, 0.0, 0.0});
-  robot.time_ = 1.0;  // its scans are stamped 1 s into the run
   // A jamb 0.6 m ahead and 0.2 m to the left: the widened disc meets it after
   // 0.6 - sqrt(0.4^2 - 0.2^2) = 0.254 m, inside the stop gap; the bare body after
   // 0.6 - sqrt(0.3^2 - 0.2^2) = 0.376 m.
-  robot.sensed_ = {{0.6, 0.2}};
-  SafetyGuard guard(options());
-  guard.readScan(robot, mrpt::poses::CPose2D(), 0.0, nullptr);
+  SafetyGuard guard = guardAfterScan({{0.6, 0.2}});
   const mrpt::poses::CPose2D origin;
   EXPECT_EQ(guard.guard({1.0, 0.0}, origin).speed, 0.0);
   // The path ends 0.25 m on: stopping there, the bare body is 0.376 - 0.25 = 0.126 m short of
@@ -87,11 +85,7 @@ TEST(SafetyGuardTest, LetsTheRobotCreepToAPathEndWhereTheBodyAndSafetyMarginFit)
 }
 
 TEST(SafetyGuardTest, PassesCommandsAwayFromTheObstacleAndTurnsOnTheSpot) {
-  KinematicRobot robot({0.0, 0.0, 0.0});
-  robot.time_ = 1.0;  // its scans are stamped 1 s into the run
-  robot.sensed_ = {{0.65, 0.0}};
-  SafetyGuard guard(options());
-  guard.readScan(robot, mrpt::poses::CPose2D(), 0.0, nullptr);
+  SafetyGuard guard = guardAfterScan({{0.65, 0.0}});
   const VelocityCommand reverse = guard.guard({-0.2, 0.0}, mrpt::poses::CPose2D());
   EXPECT_EQ(reverse.speed, -0.2);
   EXPECT_EQ(guard.freeTravel(), 2.5);  // nothing behind within the horizon
