@@ -22,7 +22,9 @@
 namespace stereonav {
 namespace {
 
-// A capture whose odometry tf has not told for this long after a later capture is given up.
+// A capture whose odometry tf has not told for this long, both after a later capture's stamp and
+// by the clock, is given up. By the stamps alone a bag played faster than real time (rosbag play
+// -r 6) waited a sixth of a second, less than tf, on its own thread, sometimes took under load.
 constexpr double kMaxTfWaitS = 1.0;
 
 RosHeadOptions headOptions(const MappingOptions& mapping, const MappingNodeOptions& options) {
@@ -111,13 +113,15 @@ void StereoMappingNode::mapReadyFrames() {
       map(*frame);
       continue;
     }
-    waiting_for_tf_.push_back(std::move(*frame));
+    waiting_for_tf_.push_back({std::move(*frame), std::chrono::steady_clock::now()});
   }
   while (!waiting_for_tf_.empty()) {
-    RigFrame& oldest = waiting_for_tf_.front();
+    RigFrame& oldest = waiting_for_tf_.front().frame;
     if (!odometryFromTf(oldest)) {
-      const double waited = mrpt::system::timeDifference(oldest.timestamp, waiting_for_tf_.back().timestamp);
-      if (waited < kMaxTfWaitS) return;
+      const double waited = mrpt::system::timeDifference(oldest.timestamp, waiting_for_tf_.back().frame.timestamp);
+      const double waited_by_clock =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - waiting_for_tf_.front().arrived).count();
+      if (waited < kMaxTfWaitS || waited_by_clock < kMaxTfWaitS) return;
       ++frames_without_odometry_;  // mapped at the last pose rather than lost
     }
     map(oldest);
@@ -180,7 +184,7 @@ size_t StereoMappingNode::finish() {
   mapReadyFrames();
   while (!waiting_for_tf_.empty()) {
     ++frames_without_odometry_;
-    map(waiting_for_tf_.front());
+    map(waiting_for_tf_.front().frame);
     waiting_for_tf_.pop_front();
   }
   if (mapper_ && ros::ok()) publishMap(last_stamp_);

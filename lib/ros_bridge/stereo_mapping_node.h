@@ -7,6 +7,7 @@
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_listener.h>
 
+#include <chrono>
 #include <deque>
 #include <memory>
 #include <string>
@@ -72,7 +73,12 @@ class StereoMappingNode {
   std::unique_ptr<tf2_ros::Buffer> tf_buffer_;
   std::unique_ptr<tf2_ros::TransformListener> tf_listener_;
   ros::Timer tf_timer_;
-  std::deque<RigFrame> waiting_for_tf_;
+  // Captures waiting for their odometry tf, with when each arrived.
+  struct WaitingFrame {
+    RigFrame frame;
+    std::chrono::steady_clock::time_point arrived;
+  };
+  std::deque<WaitingFrame> waiting_for_tf_;
   std::unique_ptr<StereoMapper> mapper_;
   std::unique_ptr<DebugPanelRenderer> panels_;
   std::vector<mrpt::poses::CPose2D> path_;
