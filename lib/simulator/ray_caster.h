@@ -8,6 +8,24 @@
 
 namespace stereonav {
 
+// The centre rays of the pixels of a pinhole image: pixel (x, y) looks from `origin` along
+// forward + (y - cy) * down + (x - cx) * right. `right` and `down` (one pixel's step) must be
+// orthogonal to `forward`; with a unit `forward`, a ray's t is the depth Z of the point it reaches.
+struct PixelRays {
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero();
+  Eigen::Vector3d forward = Eigen::Vector3d::UnitZ();
+  Eigen::Vector3d right = Eigen::Vector3d::UnitX();
+  Eigen::Vector3d down = Eigen::Vector3d::UnitY();
+  int width = 1;
+  int height = 1;
+  double cx = 0.0;
+  double cy = 0.0;
+
+  // The direction of pixel (x, y) is rowStart(y) + x * right.
+  Eigen::Vector3d rowStart(int y) const { return forward + (y - cy) * down - cx * right; }
+  Ray ray(int x, int y) const { return {origin, rowStart(y) + x * right}; }
+};
+
 // The nearest surface a ray meets, and what it is.
 struct RayHit {
   double t = kNoHit;
@@ -16,37 +34,53 @@ struct RayHit {
   double texture_offset = 0.0;  // Solid::texture_offset of the surface hit
 };
 
-// Finds the first surface along rays through a World: the floor, the optional ceiling, static
-// solids through a uniform 2D grid on the floor plane (a ray visits only the cells its floor
-// projection crosses, nearest first, and stops once a hit is closer than the next cell), and the
-// few moving obstacles directly.
+// Finds the first surface along the centre ray of every pixel of an image: the floor, the
+// optional ceiling, and the solids, static and moving. Like a z-buffer, it visits the solids
+// rather than the rays: each solid's exact ray test runs only on the pixels its silhouette covers
+// (the projection of its corners, widened by a pixel), nearest solid first, and not where the
+// pixel already holds a hit nearer than the solid's nearest corner. Hits nearer than
+// kNearPlaneT are not seen (a camera never stands that close to a surface).
 class RayCaster {
  public:
-  explicit RayCaster(const World& world, double cell_size_m = 0.5);
+  explicit RayCaster(const World& world);
 
   // The moving obstacles where they are now (MovingTraffic::solids).
   void setMovingSolids(const std::vector<Solid>& moving_solids) { moving_ = moving_solids; }
 
-  // The nearest hit with t in (0, t_max), or t = kNoHit.
-  RayHit cast(const Ray& ray, double t_max = kNoHit);
+  // Finds the first hit of every pixel's ray; hit() then reads them.
+  void cast(const PixelRays& rays);
+  // The nearest hit with t > 0 of pixel (x, y) of the last cast(), or t = kNoHit.
+  RayHit hit(int x, int y) const;
+
+  static constexpr double kNearPlaneT = 1e-6;
 
  private:
-  void castThroughGrid(const Ray& ray, double* best_t, int* best_solid, int* best_face);
+  // What a pixel's ray meets first: kNothing, kFloor, kCeiling, or an index into the cast's
+  // solids (the world's static ones, then the moving ones).
+  static constexpr int kNothing = -1;
+  static constexpr int kFloor = -2;
+  static constexpr int kCeiling = -3;
+  struct PixelHit {
+    double t;
+    int32_t source;
+    int32_t face;
+  };
+
+  const Solid& solid(int index) const;
+  // Tests `solid` on the pixels its silhouette covers whose hits are farther than `nearest_t`.
+  void drawSolid(int index, double nearest_t);
+  // Widens the row spans of the silhouette being drawn by the segment a-b (pixel coordinates).
+  void addSegment(const Eigen::Vector2d& a, const Eigen::Vector2d& b);
 
   const World& world_;
   std::vector<Solid> moving_;
-  double cell_size_;
-  double grid_x_min_ = 0.0;
-  double grid_y_min_ = 0.0;
-  int cells_x_ = 0;
-  int cells_y_ = 0;
-  double solids_top_z_ = 0.0;
-  // Compressed rows: the solids of cell c are cell_solids_[cell_begin_[c] .. cell_begin_[c+1]).
-  std::vector<int> cell_begin_;
-  std::vector<int> cell_solids_;
-  // A solid spanning several cells is tested once per ray: it is stamped with the ray's number.
-  std::vector<uint32_t> tested_by_ray_;
-  uint32_t ray_number_ = 0;
+  PixelRays rays_;
+  std::vector<PixelHit> hits_;
+  // The silhouette being drawn: the x range to test on each row, and the rows it reaches.
+  std::vector<double> span_begin_;
+  std::vector<double> span_end_;
+  int first_row_ = 0;
+  int last_row_ = -1;
 };
 
 }  // namespace stereonav

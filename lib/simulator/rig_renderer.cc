@@ -78,18 +78,22 @@ void RigRenderer::traceCamera(const mrpt::poses::CPose3D& optical_pose,
                               cv::Mat1f* brightness, cv::Mat1f* depth) {
   const PinholeCamera& camera = rig_.reference;
   const Eigen::Matrix3d rotation = optical_pose.getRotationMatrix().asEigen();
-  const Eigen::Vector3d right = rotation.col(0) / camera.focal_px;
-  const Eigen::Vector3d down = rotation.col(1) / camera.focal_px;
-  Ray ray;
-  ray.origin = Eigen::Vector3d(optical_pose.x(), optical_pose.y(), optical_pose.z());
+  PixelRays rays;
+  rays.origin = Eigen::Vector3d(optical_pose.x(), optical_pose.y(), optical_pose.z());
+  // Camera-frame directions ((x - cx)/f, (y - cy)/f, 1) in the world: t is then the depth Z.
+  rays.forward = rotation.col(2);
+  rays.right = rotation.col(0) / camera.focal_px;
+  rays.down = rotation.col(1) / camera.focal_px;
+  rays.width = camera.width;
+  rays.height = camera.height;
+  rays.cx = camera.cx;
+  rays.cy = camera.cy;
+  ray_caster_.cast(rays);
   for (int y = 0; y < camera.height; ++y) {
-    // Camera-frame direction ((x - cx)/f, (y - cy)/f, 1) in the world: t is then the depth Z.
-    const Eigen::Vector3d row_start = rotation.col(2) + (y - camera.cy) * down - camera.cx * right;
     float* brightness_row = brightness->ptr<float>(y);
     float* depth_row = depth ? depth->ptr<float>(y) : nullptr;
     for (int x = 0; x < camera.width; ++x) {
-      ray.direction = row_start + x * right;
-      const RayHit hit = ray_caster_.cast(ray);
+      const RayHit hit = ray_caster_.hit(x, y);
       if (depth_row) depth_row[x] = static_cast<float>(hit.t);
       if (hit.t == kNoHit) {
         brightness_row[x] = static_cast<float>(gain * kEmptyBrightness);

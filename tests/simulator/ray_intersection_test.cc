@@ -1,6 +1,7 @@
 #include "simulator/ray_intersection.h"
 
 #include <gtest/gtest.h>
+#include <Eigen/Geometry>
 #include <mrpt/core/bits_math.h>
 
 #include <cmath>
@@ -8,6 +9,7 @@
 
 #include "simulator/moving_traffic.h"
 #include "simulator/ray_caster.h"
+#include "simulator/world_generator.h"
 #include "world_text.h"
 
 namespace stereonav {
@@ -15,6 +17,17 @@ namespace {
 
 Ray rayFrom(double ox, double oy, double oz, double dx, double dy, double dz) {
   return {Eigen::Vector3d(ox, oy, oz), Eigen::Vector3d(dx, dy, dz)};
+}
+
+// The hit of one ray, cast as the single pixel of an image looking along it.
+RayHit castOne(RayCaster& caster, const Ray& ray) {
+  PixelRays rays;
+  rays.origin = ray.origin;
+  rays.forward = ray.direction;
+  rays.right = ray.direction.unitOrthogonal();
+  rays.down = ray.direction.cross(rays.right).normalized();
+  caster.cast(rays);
+  return caster.hit(0, 0);
 }
 
 TEST(RayIntersection, AxisAlignedBoxIsEnteredThroughTheNearFace) {
@@ -83,13 +96,13 @@ TEST(RayCaster, WallFaceIsHalfAThicknessBeforeItsCentreLine) {
   const World world = worldFromText(
       "[wall.north]\npoints = -5 2; 5 2\nheight = 2.5\nthickness = 0.1\n");
   RayCaster caster(world);
-  const RayHit hit = caster.cast(rayFrom(1.0, 0.0, 1.0, 0.0, 1.0, 0.0));
+  const RayHit hit = castOne(caster, rayFrom(1.0, 0.0, 1.0, 0.0, 1.0, 0.0));
   EXPECT_NEAR(hit.t, 1.95, 1e-12);
   EXPECT_NEAR(hit.surface.normal.y(), -1.0, 1e-12);
   // Over the top of the wall there is nothing (no ceiling).
-  EXPECT_EQ(caster.cast(rayFrom(1.0, 0.0, 1.0, 0.0, 1.0, 1.0)).t, kNoHit);
+  EXPECT_EQ(castOne(caster, rayFrom(1.0, 0.0, 1.0, 0.0, 1.0, 1.0)).t, kNoHit);
   // Looking down hits the floor.
-  EXPECT_NEAR(caster.cast(rayFrom(1.0, 0.0, 1.0, 0.0, 1.0, -1.0)).t, 1.0, 1e-12);
+  EXPECT_NEAR(castOne(caster, rayFrom(1.0, 0.0, 1.0, 0.0, 1.0, -1.0)).t, 1.0, 1e-12);
 }
 
 TEST(RayCaster, TableTopIsHitFromTheSideAndFromBelowAndTheRayPassesUnderIt) {
@@ -99,45 +112,84 @@ TEST(RayCaster, TableTopIsHitFromTheSideAndFromBelowAndTheRayPassesUnderIt) {
       "[wall.back]\npoints = 5 -3; 5 3\n");
   RayCaster caster(world);
   // Level through the slab: the edge.
-  RayHit hit = caster.cast(rayFrom(0.0, 0.0, 0.705, 1.0, 0.0, 0.0));
+  RayHit hit = castOne(caster, rayFrom(0.0, 0.0, 0.705, 1.0, 0.0, 0.0));
   EXPECT_NEAR(hit.t, 1.4, 1e-12);
   // Rising 1:10 from 0.5: under the near edge at x = 1.4 (z = 0.64), reaches 0.69 at x = 1.9.
-  hit = caster.cast(rayFrom(0.0, 0.0, 0.5, 1.0, 0.0, 0.1));
+  hit = castOne(caster, rayFrom(0.0, 0.0, 0.5, 1.0, 0.0, 0.1));
   EXPECT_NEAR(hit.t, 1.9, 1e-12);
   EXPECT_NEAR(hit.surface.normal.z(), -1.0, 1e-12);
   // Level at 0.3 between the legs: under the table to the wall's face at 4.95.
-  hit = caster.cast(rayFrom(0.0, 0.0, 0.3, 1.0, 0.0, 0.0));
+  hit = castOne(caster, rayFrom(0.0, 0.0, 0.3, 1.0, 0.0, 0.0));
   EXPECT_NEAR(hit.t, 4.95, 1e-12);
   // Through a leg: legs stand 0.05 + 0.02 in from the corners, at (2 - 0.53, 0.33).
-  hit = caster.cast(rayFrom(0.0, 0.33, 0.3, 1.0, 0.0, 0.0));
+  hit = castOne(caster, rayFrom(0.0, 0.33, 0.3, 1.0, 0.0, 0.0));
   EXPECT_NEAR(hit.t, 2.0 - 0.53 - 0.02, 1e-12);
 }
 
-TEST(RayCaster, GridTraversalFindsTheSameHitsAsTestingEverySolid) {
-  const World world = loadWorld(worldsDirectory() + "/office.ini");
-  RayCaster caster(world);
-  caster.setMovingSolids(MovingTraffic(world).solids());  // at the start of their paths
-  std::mt19937 random(7);
-  std::uniform_real_distribution<double> x_position(world.bounds[0], world.bounds[2]);
-  std::uniform_real_distribution<double> y_position(world.bounds[1], world.bounds[3]);
-  std::uniform_real_distribution<double> direction(-1.0, 1.0);
-  std::uniform_real_distribution<double> height(0.1, 2.0);
-  for (int i = 0; i < 20000; ++i) {
-    const Ray ray = rayFrom(x_position(random), y_position(random), height(random), direction(random),
-                            direction(random), 0.3 * direction(random));
-    double nearest = intersectHorizontalPlane(0.0, ray, kNoHit);
-    if (world.ceiling_height > 0.0) {
-      nearest = std::min(nearest, intersectHorizontalPlane(world.ceiling_height, ray, kNoHit));
-    }
-    for (const auto& solid : world.solids) {
+// The nearest hit of `ray` among the floor, the ceiling and every solid, static or moving.
+double nearestOfAll(const World& world, const std::vector<Solid>& moving, const Ray& ray) {
+  double nearest = ray.origin.z() > 0.0 ? intersectHorizontalPlane(0.0, ray, kNoHit) : kNoHit;
+  if (world.ceiling_height > 0.0 && ray.origin.z() < world.ceiling_height) {
+    nearest = std::min(nearest, intersectHorizontalPlane(world.ceiling_height, ray, kNoHit));
+  }
+  for (const auto* solids : {&world.solids, &moving}) {
+    for (const auto& solid : *solids) {
       int face = 0;
       nearest = std::min(nearest, intersectSolid(solid, ray, kNoHit, &face));
     }
-    for (const auto& obstacle : world.moving_obstacles) {
-      int face = 0;
-      nearest = std::min(nearest, intersectSolid(obstacle.at(0.0), ray, kNoHit, &face));
+  }
+  return nearest;
+}
+
+// Silhouettes must never lose a pixel: every pixel of random views, from anywhere in the world
+// (inside solids, against walls, under tables) looking anywhere, gets the nearest hit of all.
+void expectEveryPixelHitsTheNearestSolid(const World& world, const std::vector<Solid>& moving, int seed) {
+  RayCaster caster(world);
+  caster.setMovingSolids(moving);
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> x_position(world.bounds[0], world.bounds[2]);
+  std::uniform_real_distribution<double> y_position(world.bounds[1], world.bounds[3]);
+  std::uniform_real_distribution<double> height(0.05, 2.0);
+  std::uniform_real_distribution<double> angle(-M_PI, M_PI);
+  std::uniform_real_distribution<double> pitch(-1.2, 1.2);
+  std::uniform_real_distribution<double> focal(10.0, 60.0);
+  for (int view = 0; view < 60; ++view) {
+    const double yaw = angle(random);
+    const double down_angle = pitch(random);
+    const double roll = angle(random);
+    const Eigen::Matrix3d rotation =
+        (Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(down_angle, Eigen::Vector3d::UnitY()) *
+         Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitX()))
+            .toRotationMatrix();
+    PixelRays rays;
+    rays.origin = Eigen::Vector3d(x_position(random), y_position(random), height(random));
+    rays.forward = rotation.col(0);
+    const double f = focal(random);
+    rays.right = rotation.col(1) / f;
+    rays.down = rotation.col(2) / f;
+    rays.width = 48;
+    rays.height = 36;
+    rays.cx = 23.5;
+    rays.cy = 17.5;
+    caster.cast(rays);
+    for (int y = 0; y < rays.height; ++y) {
+      for (int x = 0; x < rays.width; ++x) {
+        ASSERT_EQ(caster.hit(x, y).t, nearestOfAll(world, moving, rays.ray(x, y)))
+            << "view " << view << " pixel " << x << ", " << y;
+      }
     }
-    ASSERT_EQ(caster.cast(ray).t, nearest) << "ray " << i;
+  }
+}
+
+TEST(RayCaster, SilhouettesFindTheSameHitsAsTestingEverySolidInTheOffice) {
+  const World world = loadWorld(worldsDirectory() + "/office.ini");
+  expectEveryPixelHitsTheNearestSolid(world, MovingTraffic(world).solids(), 7);
+}
+
+TEST(RayCaster, SilhouettesFindTheSameHitsAsTestingEverySolidInGeneratedWorlds) {
+  for (uint32_t seed : {1u, 2u, 3u}) {
+    const World world = worldFromText(generateWorld(seed).ini_text);
+    expectEveryPixelHitsTheNearestSolid(world, MovingTraffic(world).solids(), static_cast<int>(seed));
   }
 }
 
