@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "common/ini_section.h"
 #include "simulator/number_list.h"
@@ -32,20 +33,43 @@ double latticeValue(int32_t x, int32_t y, uint32_t seed) {
   return (hashLattice(x, y, seed) & 0xffffu) * (2.0 / 65535.0) - 1.0;
 }
 
+// valueNoise(), inline here: a call into the shared library for every octave of every pixel
+// costs as much as the noise itself.
+inline double latticeNoise(double x, double y, uint32_t seed) {
+  // Truncation corrected for negative values: std::floor is a library call on baseline x86-64,
+  // and this runs several times per pixel.
+  if (!(std::abs(x) < kMaxLatticeCoordinate && std::abs(y) < kMaxLatticeCoordinate)) return 0.0;
+  int32_t ix = static_cast<int32_t>(x);
+  int32_t iy = static_cast<int32_t>(y);
+  ix -= x < ix;
+  iy -= y < iy;
+  const double tx = x - ix;
+  const double ty = y - iy;
+  const double sx = tx * tx * (3.0 - 2.0 * tx);
+  const double sy = ty * ty * (3.0 - 2.0 * ty);
+  const double a = latticeValue(ix, iy, seed);
+  const double b = latticeValue(ix + 1, iy, seed);
+  const double c = latticeValue(ix, iy + 1, seed);
+  const double d = latticeValue(ix + 1, iy + 1, seed);
+  return (a + (b - a) * sx) + ((c + (d - c) * sx) - (a + (b - a) * sx)) * sy;
+}
+
 // How much of an octave of wavelength `wavelength` survives a pixel footprint: all of it above
-// four pixels per wavelength, none below two (where it could only alias).
-double octaveWeight(double wavelength, double footprint) {
-  if (footprint <= 0.0) return 1.0;
-  return std::clamp((wavelength / footprint - 2.0) / 2.0, 0.0, 1.0);
+// four pixels per wavelength, none below two (where it could only alias). Written with the
+// footprint's inverse: the division is done once per pixel, not once per octave.
+double octaveWeight(double wavelength, double inverse_footprint) {
+  return std::clamp((wavelength * inverse_footprint - 2.0) / 2.0, 0.0, 1.0);
 }
 
 double multiScaleNoise(const SurfaceTexture& texture, double u, double v, double footprint) {
+  const double inverse_footprint = footprint > 0.0 ? 1.0 / footprint : std::numeric_limits<double>::infinity();
   double sum = 0.0;
   for (size_t i = 0; i < texture.scales_m.size(); ++i) {
     const double wavelength = texture.scales_m[i];
-    const double weight = octaveWeight(wavelength, footprint);
+    const double weight = octaveWeight(wavelength, inverse_footprint);
     if (weight == 0.0) continue;
-    sum += weight * valueNoise(u / wavelength, v / wavelength, texture.seed + 1013u * i);
+    const double inverse_wavelength = 1.0 / wavelength;
+    sum += weight * latticeNoise(u * inverse_wavelength, v * inverse_wavelength, texture.seed + 1013u * i);
   }
   // Interpolated value noise has a standard deviation near 1/3 per octave.
   return sum * 3.0 / std::sqrt(static_cast<double>(texture.scales_m.size()));
@@ -87,24 +111,7 @@ double stripes(const SurfaceTexture& texture, double u, double v, double footpri
 
 }  // namespace
 
-double valueNoise(double x, double y, uint32_t seed) {
-  // Truncation corrected for negative values: std::floor is a library call on baseline x86-64,
-  // and this runs several times per pixel.
-  if (!(std::abs(x) < kMaxLatticeCoordinate && std::abs(y) < kMaxLatticeCoordinate)) return 0.0;
-  int32_t ix = static_cast<int32_t>(x);
-  int32_t iy = static_cast<int32_t>(y);
-  ix -= x < ix;
-  iy -= y < iy;
-  const double tx = x - ix;
-  const double ty = y - iy;
-  const double sx = tx * tx * (3.0 - 2.0 * tx);
-  const double sy = ty * ty * (3.0 - 2.0 * ty);
-  const double a = latticeValue(ix, iy, seed);
-  const double b = latticeValue(ix + 1, iy, seed);
-  const double c = latticeValue(ix, iy + 1, seed);
-  const double d = latticeValue(ix + 1, iy + 1, seed);
-  return (a + (b - a) * sx) + ((c + (d - c) * sx) - (a + (b - a) * sx)) * sy;
-}
+double valueNoise(double x, double y, uint32_t seed) { return latticeNoise(x, y, seed); }
 
 double SurfaceTexture::albedo(double u, double v, double footprint_m, double noise_shift) const {
   double signal = 0.0;
