@@ -1,5 +1,6 @@
 #include "closed_loop/exploration_benchmark.h"
 
+#include <opencv2/core/utility.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
@@ -178,7 +179,12 @@ std::string benchmarkSummary(const std::vector<ExplorationBenchmarkRun>& runs) {
 std::vector<ExplorationBenchmarkRun> runExplorationBenchmark(ExplorationConfig config,
                                                              const ExplorationBenchmarkJob& job,
                                                              const std::function<void(size_t, size_t)>& on_run) {
+  // Each run on one thread, OpenCV's parallel loops too (distance transforms, connected
+  // components): otherwise they borrow the cores the other runs are on, and a run's speed-up is
+  // not that of one core.
   config.mapping.stereo.threads = 1;
+  const int opencv_threads = cv::getNumThreads();
+  cv::setNumThreads(1);
   std::vector<ExplorationBenchmarkRun> runs;
   for (unsigned world_seed : job.world_seeds) {
     const GeneratedWorld world = generateWorld(world_seed);
@@ -213,6 +219,7 @@ std::vector<ExplorationBenchmarkRun> runExplorationBenchmark(ExplorationConfig c
   std::vector<std::thread> threads;
   for (size_t t = 0; t < std::max<size_t>(1, std::min(job.parallel_runs, runs.size())); ++t) threads.emplace_back(worker);
   for (std::thread& thread : threads) thread.join();
+  cv::setNumThreads(opencv_threads);
 
   const std::string& directory = job.output_directory;
   writeStringAtomically(directory + "/runs.csv", runsCsv(runs));
