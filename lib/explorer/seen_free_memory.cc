@@ -37,17 +37,11 @@ void SeenFreeMemory::update(const DisparityTaggedGrid& grid, const mrpt::poses::
       const double x = grid.minX() + (col + 0.5) * r, y = grid.minY() + (row + 0.5) * r;
       if (withinView(pose, x, y, options_.range_m, half_view) &&
           alongStraightLine(cv::Point(robot_col, robot_row), cv::Point(col, row), passes)) {
-        cells_.insert(lattice_.cellAt(x, y));
+        const WorldCellLattice::Cell cell = lattice_.cellAt(x, y);
+        if (cells_.insert(cell).second) centres_.push_back(lattice_.centre(cell));
       }
     }
   }
-}
-
-std::vector<cv::Point2d> SeenFreeMemory::cells() const {
-  std::vector<cv::Point2d> centres;
-  centres.reserve(cells_.size());
-  for (const WorldCellLattice::Cell& cell : cells_) centres.push_back(lattice_.centre(cell));
-  return centres;
 }
 
 }  // namespace stereonav

@@ -42,14 +42,17 @@ class SeenFreeMemory {
   // trail would otherwise reopen as frontiers every time it passes.
   void update(const DisparityTaggedGrid& grid, const mrpt::poses::CPose2D& pose);
 
-  // Centres of the remembered cells (map frame).
-  std::vector<cv::Point2d> cells() const;
-  size_t size() const { return cells_.size(); }
+  // Centres of the remembered cells (map frame), in the order they were first seen.
+  const std::vector<cv::Point2d>& cells() const { return centres_; }
+  size_t size() const { return centres_.size(); }
 
  private:
   SeenFreeMemoryOptions options_;
   WorldCellLattice lattice_;
   std::set<WorldCellLattice::Cell> cells_;
+  // The planner reads every remembered cell every frame: a list, kept as cells are added (none
+  // is ever removed), instead of a walk over the set, whose nodes grow with the floor explored.
+  std::vector<cv::Point2d> centres_;
 };
 
 }  // namespace stereonav
