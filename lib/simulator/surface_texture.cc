@@ -33,8 +33,8 @@ double latticeValue(int32_t x, int32_t y, uint32_t seed) {
   return (hashLattice(x, y, seed) & 0xffffu) * (2.0 / 65535.0) - 1.0;
 }
 
-// valueNoise(), inline here: a call into the shared library for every octave of every pixel
-// costs as much as the noise itself.
+// valueNoise()'s body, inline here: multiScaleNoise runs it for every octave of every pixel,
+// and the exported function is called through the library's symbol table.
 inline double latticeNoise(double x, double y, uint32_t seed) {
   // Truncation corrected for negative values: std::floor is a library call on baseline x86-64,
   // and this runs several times per pixel.
