@@ -8,28 +8,36 @@
 namespace stereonav {
 namespace {
 
-// The corners of a solid's bounding prism in a view's coordinates (a, b, c): corner - origin =
-// c * forward + a * right + b * down, so that it lies on the ray of pixel (cx + a/c, cy + b/c)
-// at t = c. Boxes: their own corners; cylinders: the square prism around them.
+// The axes of a view scaled so that a point's coordinates along them are (a, b, c) with
+// point - origin = c * forward + a * right + b * down: the point lies on the ray of pixel
+// (cx + a/c, cy + b/c) at t = c.
+struct ViewAxes {
+  Eigen::Vector3d origin, right, down, forward;
+  explicit ViewAxes(const PixelRays& rays)
+      : origin(rays.origin),
+        right(rays.right / rays.right.squaredNorm()),
+        down(rays.down / rays.down.squaredNorm()),
+        forward(rays.forward / rays.forward.squaredNorm()) {}
+};
+
+// The corners of a solid's bounding prism in view coordinates (a, b, c). Boxes: their own
+// corners; cylinders: the square prism around them.
 using ViewCorners = std::array<Eigen::Vector3d, 8>;
 
-ViewCorners viewCorners(const Solid& solid, const PixelRays& rays) {
+ViewCorners viewCorners(const Solid& solid, const ViewAxes& view) {
   const bool box = solid.shape == Solid::Shape::kBox;
   const double cos_yaw = box ? solid.cos_yaw : 1.0;
   const double sin_yaw = box ? solid.sin_yaw : 0.0;
   const double half_x = box ? solid.half_x : solid.radius;
   const double half_y = box ? solid.half_y : solid.radius;
-  const Eigen::Vector3d forward = rays.forward / rays.forward.squaredNorm();
-  const Eigen::Vector3d right = rays.right / rays.right.squaredNorm();
-  const Eigen::Vector3d down = rays.down / rays.down.squaredNorm();
   ViewCorners corners;
   for (int i = 0; i < 8; ++i) {
     const double along_x = (i & 1) ? half_x : -half_x;
     const double along_y = (i & 2) ? half_y : -half_y;
     const Eigen::Vector3d corner(solid.x + along_x * cos_yaw - along_y * sin_yaw,
                                  solid.y + along_x * sin_yaw + along_y * cos_yaw, (i & 4) ? solid.z_max : solid.z_min);
-    const Eigen::Vector3d relative = corner - rays.origin;
-    corners[i] = Eigen::Vector3d(relative.dot(right), relative.dot(down), relative.dot(forward));
+    const Eigen::Vector3d relative = corner - view.origin;
+    corners[i] = Eigen::Vector3d(relative.dot(view.right), relative.dot(view.down), relative.dot(view.forward));
   }
   return corners;
 }
@@ -70,13 +78,15 @@ void RayCaster::cast(const PixelRays& rays) {
   }
 
   // Nearest first, so that most pixels of a hidden solid are passed over by one comparison.
-  std::vector<std::pair<double, int>> order;
+  const ViewAxes view(rays);
   const int solid_count = static_cast<int>(world_.solids.size() + moving_.size());
+  std::vector<ViewCorners> corners(static_cast<size_t>(solid_count));
+  std::vector<std::pair<double, int>> order;
   for (int i = 0; i < solid_count; ++i) {
-    const ViewCorners corners = viewCorners(solid(i), rays);
+    corners[i] = viewCorners(solid(i), view);
     double nearest = kNoHit;
     double farthest = -kNoHit;
-    for (const auto& corner : corners) {
+    for (const auto& corner : corners[i]) {
       nearest = std::min(nearest, corner.z());
       farthest = std::max(farthest, corner.z());
     }
@@ -85,11 +95,10 @@ void RayCaster::cast(const PixelRays& rays) {
   std::sort(order.begin(), order.end());
   span_begin_.assign(rays.height, kNoHit);
   span_end_.assign(rays.height, -kNoHit);
-  for (const auto& [nearest, index] : order) drawSolid(index, nearest);
+  for (const auto& [nearest, index] : order) drawSolid(index, nearest, corners[index]);
 }
 
-void RayCaster::drawSolid(int index, double nearest_t) {
-  const ViewCorners corners = viewCorners(solid(index), rays_);
+void RayCaster::drawSolid(int index, double nearest_t, const std::array<Eigen::Vector3d, 8>& corners) {
   const auto project = [&](const Eigen::Vector3d& corner) {
     return Eigen::Vector2d(rays_.cx + corner.x() / corner.z(), rays_.cy + corner.y() / corner.z());
   };

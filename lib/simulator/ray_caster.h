@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -67,8 +68,9 @@ class RayCaster {
   };
 
   const Solid& solid(int index) const;
-  // Tests `solid` on the pixels its silhouette covers whose hits are farther than `nearest_t`.
-  void drawSolid(int index, double nearest_t);
+  // Tests solid `index` on the pixels its silhouette covers whose hits are farther than
+  // `nearest_t`; `corners`: its bounding prism's corners in view coordinates (ray_caster.cc).
+  void drawSolid(int index, double nearest_t, const std::array<Eigen::Vector3d, 8>& corners);
   // Widens the row spans of the silhouette being drawn by the segment a-b (pixel coordinates).
   void addSegment(const Eigen::Vector2d& a, const Eigen::Vector2d& b);
 
