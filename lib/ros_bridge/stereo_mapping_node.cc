@@ -122,8 +122,7 @@ void StereoMappingNode::mapReadyFrames() {
       const double waited_by_clock =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - waiting_for_tf_.front().arrived).count();
       if (waited < kMaxTfWaitS || waited_by_clock < kMaxTfWaitS) return;
-      ++frames_without_odometry_;  // mapped at the last pose rather than lost
-    }
+    }  // given up: mapped at the last pose rather than lost
     map(oldest);
     waiting_for_tf_.pop_front();
   }
@@ -183,7 +182,6 @@ size_t StereoMappingNode::finish() {
   assembler_.finish();
   mapReadyFrames();
   while (!waiting_for_tf_.empty()) {
-    ++frames_without_odometry_;
     map(waiting_for_tf_.front().frame);
     waiting_for_tf_.pop_front();
   }
