@@ -15,7 +15,7 @@
 #include <signal.h>
 #include <spawn.h>
 #include <std_msgs/UInt32.h>
-#include <tf2_ros/transform_broadcaster.h>
+#include <tf2_msgs/TFMessage.h>
 #include <sys/socket.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -209,7 +209,10 @@ StereonavNodeTest::Playback StereonavNodeTest::play(const std::string& bag_path,
     }
   }
   EXPECT_EQ(publishers.size(), odometry == Odometry::kTopic ? 7u : 6u);  // 3 x (image, info) + odom
-  tf2_ros::TransformBroadcaster tf_broadcaster;
+  // tf is published here rather than by a tf2_ros::TransformBroadcaster so that playing waits for
+  // the node's listener too: a transform sent before it connects is lost, and its capture is then
+  // mapped at the last pose.
+  if (odometry == Odometry::kTf) publishers["/tf"] = handle.advertise<tf2_msgs::TFMessage>("/tf", 100);
   for (auto& [topic, publisher] : publishers) {
     EXPECT_TRUE(waitFor([&] { return publisher.getNumSubscribers() > 0; }, 30.0))
         << "stereonav_node did not subscribe to " << topic;
@@ -221,7 +224,7 @@ StereonavNodeTest::Playback StereonavNodeTest::play(const std::string& bag_path,
   const auto start = std::chrono::steady_clock::now();
   for (const rosbag::MessageInstance& message : view) {
     std::this_thread::sleep_until(start + std::chrono::duration<double>((message.getTime() - begin).toSec() / speed_up));
-    ros::Publisher& publisher = publishers[message.getTopic()];  // empty for odometry over tf
+    ros::Publisher& publisher = publishers[message.getTopic()];
     if (const auto image = message.instantiate<sensor_msgs::Image>()) publisher.publish(image);
     if (const auto info = message.instantiate<sensor_msgs::CameraInfo>()) publisher.publish(info);
     const auto odometry_message = message.instantiate<nav_msgs::Odometry>();
@@ -234,7 +237,9 @@ StereonavNodeTest::Playback StereonavNodeTest::play(const std::string& bag_path,
       transform.transform.translation.y = odometry_message->pose.pose.position.y;
       transform.transform.translation.z = odometry_message->pose.pose.position.z;
       transform.transform.rotation = odometry_message->pose.pose.orientation;
-      tf_broadcaster.sendTransform(transform);
+      tf2_msgs::TFMessage transforms;
+      transforms.transforms.push_back(transform);
+      publishers["/tf"].publish(transforms);
     }
   }
   const auto played = std::chrono::steady_clock::now();
