@@ -92,6 +92,9 @@ void RigRenderer::traceCamera(const mrpt::poses::CPose3D& optical_pose,
   for (int y = 0; y < camera.height; ++y) {
     float* brightness_row = brightness->ptr<float>(y);
     float* depth_row = depth ? depth->ptr<float>(y) : nullptr;
+    queries_.clear();
+    query_columns_.clear();
+    shades_.clear();
     for (int x = 0; x < camera.width; ++x) {
       const RayHit hit = ray_caster_.hit(x, y);
       if (depth_row) depth_row[x] = static_cast<float>(hit.t);
@@ -105,10 +108,13 @@ void RigRenderer::traceCamera(const mrpt::poses::CPose3D& optical_pose,
       const double facing =
           std::max(std::abs(hit.surface.normal.dot(line_of_sight)) / distance, kMinimumCosine);
       const double footprint = distance / (camera.focal_px * facing);
-      const double albedo =
-          world_.textures[hit.texture].albedo(hit.surface.u, hit.surface.v, footprint, hit.texture_offset);
-      const double shade = kAmbient + kDiffuse * std::abs(hit.surface.normal.dot(kLightDirection));
-      brightness_row[x] = static_cast<float>(255.0 * gain * shade * albedo);
+      queries_.push_back({&world_.textures[hit.texture], hit.surface.u, hit.surface.v, footprint, hit.texture_offset});
+      query_columns_.push_back(x);
+      shades_.push_back(kAmbient + kDiffuse * std::abs(hit.surface.normal.dot(kLightDirection)));
+    }
+    albedo_sampler_.sample(queries_, albedos_);
+    for (size_t i = 0; i < queries_.size(); ++i) {
+      brightness_row[query_columns_[i]] = static_cast<float>(255.0 * gain * shades_[i] * albedos_[i]);
     }
   }
 }

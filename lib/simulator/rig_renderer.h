@@ -10,6 +10,7 @@
 #include "common/ini_section.h"
 #include "rig/camera_rig.h"
 #include "simulator/ray_caster.h"
+#include "simulator/surface_texture.h"
 #include "simulator/world.h"
 
 namespace stereonav {
@@ -65,6 +66,11 @@ class RigRenderer {
   SensorOptions sensor_;
   RayCaster ray_caster_;
   cv::RNG noise_;
+  // A camera row's lit pixels: what to sample, where, and their shading.
+  AlbedoSampler albedo_sampler_;
+  std::vector<AlbedoQuery> queries_;
+  std::vector<int> query_columns_;
+  std::vector<double> shades_, albedos_;
 };
 
 }  // namespace stereonav

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 #include "common/ini_section.h"
@@ -17,10 +18,17 @@ constexpr double kMaxWavelength = 1e4;
 // texture: truncation to int32 would overflow there.
 constexpr double kMaxLatticeCoordinate = 1e9;
 
-uint32_t hashLattice(int32_t x, int32_t y, uint32_t seed) {
+// kNoiseLanes lanes of doubles, and of the 32-bit lattice coordinates and hashes beside them.
+using Doubles = double __attribute__((vector_size(8 * kNoiseLanes)));
+using Longs = int64_t __attribute__((vector_size(8 * kNoiseLanes)));
+using Ints = int32_t __attribute__((vector_size(4 * kNoiseLanes)));
+using Words = uint32_t __attribute__((vector_size(4 * kNoiseLanes)));
+
+// Inlined into each build of valueNoise below (they pass whole vectors, whose ABI differs by
+// instruction set).
+[[gnu::always_inline]] inline Words hashLattice(Ints x, Ints y, Words seed_term) {
   // Integer avalanche mix: neighbouring lattice points get unrelated values.
-  uint32_t h = static_cast<uint32_t>(x) * 0x8da6b343u ^ static_cast<uint32_t>(y) * 0xd8163841u ^
-               seed * 0xcb1ab31fu;
+  Words h = reinterpret_cast<Words&>(x) * 0x8da6b343u ^ reinterpret_cast<Words&>(y) * 0xd8163841u ^ seed_term;
   h ^= h >> 16;
   h *= 0x7feb352du;
   h ^= h >> 15;
@@ -29,29 +37,10 @@ uint32_t hashLattice(int32_t x, int32_t y, uint32_t seed) {
   return h;
 }
 
-double latticeValue(int32_t x, int32_t y, uint32_t seed) {
-  return (hashLattice(x, y, seed) & 0xffffu) * (2.0 / 65535.0) - 1.0;
-}
-
-// valueNoise()'s body, inline here: multiScaleNoise runs it for every octave of every pixel,
-// and the exported function is called through the library's symbol table.
-inline double latticeNoise(double x, double y, uint32_t seed) {
-  // Truncation corrected for negative values: std::floor is a library call on baseline x86-64,
-  // and this runs several times per pixel.
-  if (!(std::abs(x) < kMaxLatticeCoordinate && std::abs(y) < kMaxLatticeCoordinate)) return 0.0;
-  int32_t ix = static_cast<int32_t>(x);
-  int32_t iy = static_cast<int32_t>(y);
-  ix -= x < ix;
-  iy -= y < iy;
-  const double tx = x - ix;
-  const double ty = y - iy;
-  const double sx = tx * tx * (3.0 - 2.0 * tx);
-  const double sy = ty * ty * (3.0 - 2.0 * ty);
-  const double a = latticeValue(ix, iy, seed);
-  const double b = latticeValue(ix + 1, iy, seed);
-  const double c = latticeValue(ix, iy + 1, seed);
-  const double d = latticeValue(ix + 1, iy + 1, seed);
-  return (a + (b - a) * sx) + ((c + (d - c) * sx) - (a + (b - a) * sx)) * sy;
+// The lattice point's value in [0, 65535]; value noise maps it to [-1, 1].
+[[gnu::always_inline]] inline Ints latticeLevel(Ints x, Ints y, Words seed_term) {
+  const Words low = hashLattice(x, y, seed_term) & 0xffffu;
+  return reinterpret_cast<const Ints&>(low);
 }
 
 // How much of an octave of wavelength `wavelength` survives a pixel footprint: all of it above
@@ -59,20 +48,6 @@ inline double latticeNoise(double x, double y, uint32_t seed) {
 // footprint's inverse: the division is done once per pixel, not once per octave.
 double octaveWeight(double wavelength, double inverse_footprint) {
   return std::clamp((wavelength * inverse_footprint - 2.0) / 2.0, 0.0, 1.0);
-}
-
-double multiScaleNoise(const SurfaceTexture& texture, double u, double v, double footprint) {
-  const double inverse_footprint = footprint > 0.0 ? 1.0 / footprint : std::numeric_limits<double>::infinity();
-  double sum = 0.0;
-  for (size_t i = 0; i < texture.scales_m.size(); ++i) {
-    const double wavelength = texture.scales_m[i];
-    const double weight = octaveWeight(wavelength, inverse_footprint);
-    if (weight == 0.0) continue;
-    const double inverse_wavelength = 1.0 / wavelength;
-    sum += weight * latticeNoise(u * inverse_wavelength, v * inverse_wavelength, texture.seed + 1013u * i);
-  }
-  // Interpolated value noise has a standard deviation near 1/3 per octave.
-  return sum * 3.0 / std::sqrt(static_cast<double>(texture.scales_m.size()));
 }
 
 // Second integral of the unit square wave (1 on the first `duty` of each period) from 0 to s,
@@ -111,27 +86,139 @@ double stripes(const SurfaceTexture& texture, double u, double v, double footpri
 
 }  // namespace
 
-double valueNoise(double x, double y, uint32_t seed) { return latticeNoise(x, y, seed); }
+// Built for AVX2 as well (chosen at load time): the lanes then fill whole vector registers. Not
+// with FMA, whose fused rounding would change the images from one machine to another.
+__attribute__((target_clones("avx2", "default")))
+void valueNoise(const double* x, const double* y, const uint32_t* seed, double* noise, size_t n) {
+  const Doubles zero{};
+  for (size_t i = 0; i < n; i += kNoiseLanes) {
+    Doubles px, py;
+    Words seeds;
+    std::memcpy(&px, x + i, sizeof px);
+    std::memcpy(&py, y + i, sizeof py);
+    std::memcpy(&seeds, seed + i, sizeof seeds);
+    // Far lattice coordinates (or NaN) read as flat texture, computed at 0 to keep the int
+    // conversion in range.
+    const Longs inside = ((px < zero ? -px : px) < kMaxLatticeCoordinate) &
+                         ((py < zero ? -py : py) < kMaxLatticeCoordinate);
+    px = inside ? px : zero;
+    py = inside ? py : zero;
+    // Truncation corrected for negative values: floor.
+    Ints ix = __builtin_convertvector(px, Ints);
+    Ints iy = __builtin_convertvector(py, Ints);
+    ix += __builtin_convertvector(px < __builtin_convertvector(ix, Doubles), Ints);
+    iy += __builtin_convertvector(py < __builtin_convertvector(iy, Doubles), Ints);
+    const Doubles tx = px - __builtin_convertvector(ix, Doubles);
+    const Doubles ty = py - __builtin_convertvector(iy, Doubles);
+    const Doubles sx = tx * tx * (3.0 - 2.0 * tx);
+    const Doubles sy = ty * ty * (3.0 - 2.0 * ty);
+    const Words seed_term = seeds * 0xcb1ab31fu;
+    constexpr double kLevelToUnit = 2.0 / 65535.0;
+    const Doubles a = __builtin_convertvector(latticeLevel(ix, iy, seed_term), Doubles) * kLevelToUnit - 1.0;
+    const Doubles b = __builtin_convertvector(latticeLevel(ix + 1, iy, seed_term), Doubles) * kLevelToUnit - 1.0;
+    const Doubles c = __builtin_convertvector(latticeLevel(ix, iy + 1, seed_term), Doubles) * kLevelToUnit - 1.0;
+    const Doubles d = __builtin_convertvector(latticeLevel(ix + 1, iy + 1, seed_term), Doubles) * kLevelToUnit - 1.0;
+    const Doubles value = (a + (b - a) * sx) + ((c + (d - c) * sx) - (a + (b - a) * sx)) * sy;
+    const Doubles kept = inside ? value : zero;
+    std::memcpy(noise + i, &kept, sizeof kept);
+  }
+}
+
+double valueNoise(double x, double y, uint32_t seed) {
+  double xs[kNoiseLanes] = {x}, ys[kNoiseLanes] = {y}, noise[kNoiseLanes];
+  uint32_t seeds[kNoiseLanes] = {seed};
+  valueNoise(xs, ys, seeds, noise, 1);
+  return noise[0];
+}
 
 double SurfaceTexture::albedo(double u, double v, double footprint_m, double noise_shift) const {
-  double signal = 0.0;
-  switch (kind) {
-    case Kind::kPaint:
-      return mean;
-    case Kind::kNoise:
-      signal = multiScaleNoise(*this, u + noise_shift, v, footprint_m);
-      break;
-    case Kind::kStripes:
-      signal = stripes(*this, u, v, footprint_m);
-      break;
-    case Kind::kPoster:
-      if (u < poster_rect[0] || u > poster_rect[2] || v < poster_rect[1] || v > poster_rect[3]) {
-        return mean;
+  AlbedoSampler sampler;
+  std::vector<double> albedos;
+  sampler.sample({AlbedoQuery{this, u, v, footprint_m, noise_shift}}, albedos);
+  return albedos[0];
+}
+
+void AlbedoSampler::growPoints(size_t points) {
+  if (x_.size() >= points + kNoiseLanes) return;
+  const size_t size = 2 * (points + kNoiseLanes);
+  x_.resize(size);
+  y_.resize(size);
+  seed_.resize(size);
+  weight_.resize(size);
+  noise_.resize(size);
+}
+
+void AlbedoSampler::sample(const std::vector<AlbedoQuery>& queries, std::vector<double>& albedos) {
+  albedos.resize(queries.size());
+  // The lattice points of every octave of every query that needs the noise, query by query,
+  // each query's in octave order: its sum then adds them in the order albedo() does.
+  noisy_.clear();
+  points_end_.clear();
+  size_t count = 0;
+  const SurfaceTexture* texture_seen = nullptr;  // the last texture's octaves, kept (rows share few)
+  for (size_t i = 0; i < queries.size(); ++i) {
+    const AlbedoQuery& query = queries[i];
+    const SurfaceTexture& texture = *query.texture;
+    switch (texture.kind) {
+      case SurfaceTexture::Kind::kPaint:
+        albedos[i] = texture.mean;
+        continue;
+      case SurfaceTexture::Kind::kStripes:
+        albedos[i] = std::clamp(
+            texture.mean + texture.contrast * stripes(texture, query.u, query.v, query.footprint_m), 0.0, 1.0);
+        continue;
+      case SurfaceTexture::Kind::kPoster: {
+        const auto& rect = texture.poster_rect;
+        if (query.u < rect[0] || query.u > rect[2] || query.v < rect[1] || query.v > rect[3]) {
+          albedos[i] = texture.mean;
+          continue;
+        }
+        break;
       }
-      signal = multiScaleNoise(*this, u + noise_shift, v, footprint_m);
-      break;
+      case SurfaceTexture::Kind::kNoise:
+        break;
+    }
+    const size_t octaves = texture.scales_m.size();
+    if (&texture != texture_seen) {
+      texture_seen = &texture;
+      inverse_wavelengths_.resize(octaves);
+      octave_seeds_.resize(octaves);
+      for (size_t octave = 0; octave < octaves; ++octave) {
+        inverse_wavelengths_[octave] = 1.0 / texture.scales_m[octave];
+        octave_seeds_[octave] = texture.seed + 1013u * static_cast<uint32_t>(octave);
+      }
+    }
+    growPoints(count + octaves);
+    const double inverse_footprint =
+        query.footprint_m > 0.0 ? 1.0 / query.footprint_m : std::numeric_limits<double>::infinity();
+    const double u = query.u + query.noise_shift;
+    for (size_t octave = 0; octave < octaves; ++octave) {
+      const double weight = octaveWeight(texture.scales_m[octave], inverse_footprint);
+      if (weight == 0.0) continue;
+      x_[count] = u * inverse_wavelengths_[octave];
+      y_[count] = query.v * inverse_wavelengths_[octave];
+      seed_[count] = octave_seeds_[octave];
+      weight_[count] = weight;
+      ++count;
+    }
+    noisy_.push_back(i);
+    points_end_.push_back(count);
   }
-  return std::clamp(mean + contrast * signal, 0.0, 1.0);
+  // The lanes past the last point: defined values, their noise unused.
+  growPoints(count);
+  std::fill(x_.begin() + count, x_.begin() + count + kNoiseLanes, 0.0);
+  std::fill(y_.begin() + count, y_.begin() + count + kNoiseLanes, 0.0);
+  valueNoise(x_.data(), y_.data(), seed_.data(), noise_.data(), count);
+
+  size_t point = 0;
+  for (size_t j = 0; j < noisy_.size(); ++j) {
+    double sum = 0.0;
+    for (; point < points_end_[j]; ++point) sum += weight_[point] * noise_[point];
+    const SurfaceTexture& texture = *queries[noisy_[j]].texture;
+    // Interpolated value noise has a standard deviation near 1/3 per octave.
+    const double signal = sum * 3.0 / std::sqrt(static_cast<double>(texture.scales_m.size()));
+    albedos[noisy_[j]] = std::clamp(texture.mean + texture.contrast * signal, 0.0, 1.0);
+  }
 }
 
 SurfaceTexture loadSurfaceTexture(IniSection& section) {

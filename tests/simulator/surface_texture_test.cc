@@ -9,8 +9,9 @@ namespace stereonav {
 namespace {
 
 TEST(SurfaceTexture, ValueNoiseIsBoundedAndContinuous) {
-  double previous = valueNoise(0.0, 0.3, 5);
-  for (int i = 1; i <= 10000; ++i) {
+  // Across zero too: lattice cells of negative coordinates start at their floor.
+  double previous = valueNoise(-5.0, 0.3, 5);
+  for (int i = -4999; i <= 10000; ++i) {
     const double x = i * 1e-3;
     const double value = valueNoise(x, 0.3, 5);
     ASSERT_LE(std::abs(value), 1.0);
@@ -57,6 +58,50 @@ TEST(SurfaceTexture, PosterIsTexturedInsideItsFrameOnly) {
   double spread = 0.0;
   for (int i = 0; i < 100; ++i) spread = std::max(spread, std::abs(poster.albedo(1.0 + i * 0.01, 1.2, 0.001) - poster.mean));
   EXPECT_GT(spread, 0.05);
+}
+
+TEST(SurfaceTexture, NoiseFarOutOnTheLatticeIsFlat) {
+  const SurfaceTexture noise;  // the finest octave 0.025 m: 4e10 lattice cells at 1e9 m
+  EXPECT_DOUBLE_EQ(noise.albedo(1e9, 0.2, 0.001), noise.mean);
+  EXPECT_DOUBLE_EQ(noise.albedo(0.2, -1e9, 0.001), noise.mean);
+  EXPECT_DOUBLE_EQ(noise.albedo(std::nan(""), 0.2, 0.001), noise.mean);
+  EXPECT_NE(noise.albedo(1e3, 0.2, 0.001), noise.mean);
+}
+
+// The sampler computes many points in vector lanes side by side: no point may depend on its
+// neighbours, whatever their textures, octaves, footprints and count.
+TEST(AlbedoSampler, EachPointGetsWhatItGetsAlone) {
+  std::vector<SurfaceTexture> textures(6);
+  textures[1].scales_m = {0.3, 0.05};
+  textures[1].seed = 7;
+  textures[2].kind = SurfaceTexture::Kind::kPaint;
+  textures[3].kind = SurfaceTexture::Kind::kStripes;
+  textures[4].kind = SurfaceTexture::Kind::kPoster;
+  textures[4].poster_rect = {0.0, 0.0, 1.0, 1.0};
+  textures[5].scales_m = {0.6, 0.15, 0.04, 0.01};
+  textures[5].contrast = 0.6;
+  std::vector<AlbedoQuery> queries;
+  for (int i = 0; i < 203; ++i) {  // not a whole number of lanes
+    AlbedoQuery query;
+    query.texture = &textures[(i * 7) % textures.size()];
+    query.u = -1.5 + 0.0173 * i;
+    query.v = 0.9 - 0.011 * i;
+    query.footprint_m = i % 5 == 0 ? 0.0 : 0.0007 * (i % 41);
+    query.noise_shift = i % 3 == 0 ? 2.5 : 0.0;
+    if (i == 50) query.u = 1e12;
+    queries.push_back(query);
+  }
+  AlbedoSampler sampler;
+  std::vector<double> together, alone;
+  sampler.sample(queries, together);
+  ASSERT_EQ(together.size(), queries.size());
+  size_t textured = 0;
+  for (size_t i = 0; i < queries.size(); ++i) {
+    sampler.sample({queries[i]}, alone);
+    EXPECT_EQ(together[i], alone[0]) << "point " << i;
+    textured += together[i] != queries[i].texture->mean;
+  }
+  EXPECT_GT(textured, queries.size() / 2);  // the octaves were there to mix up
 }
 
 TEST(SurfaceTexture, LoaderRejectsBadValuesByKey) {
