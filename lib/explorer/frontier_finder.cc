@@ -11,9 +11,8 @@ namespace {
 // pinned down are not an opening: a wall's cells eroded by grazing rays, the band between a wall
 // and the region of uncertainty of its far readings. Looking again does not open them, and as
 // far views keep redrawing such bands the robot would tour finished rooms. A seam: a connected
-// region of unresolved cells none of which is farther than this from a resolved cell, touching
-// a precise obstacle.
-constexpr float kSeamHalfWidthCells = 1.5f;
+// region of unresolved cells each of which has a resolved cell among its 8 neighbours (none is
+// farther than 1.5 cells from one), touching a precise obstacle.
 
 // Per cell: the label of the unresolved region of an opening it is in, 0 otherwise (resolved, or
 // in a seam); `areas` gets each label's cell count.
@@ -25,14 +24,15 @@ cv::Mat1i openingRegions(const NavigationGrid& grid, std::vector<int>& areas) {
   const int count = cv::connectedComponentsWithStats(unresolved, labels, stats, centroids, 8, CV_32S);
   areas.assign(static_cast<size_t>(count), 0);
   for (int label = 1; label < count; ++label) areas[label] = stats.at<int>(label, cv::CC_STAT_AREA);
-  cv::Mat1f depth;
-  cv::distanceTransform(unresolved, depth, cv::DIST_L2, cv::DIST_MASK_PRECISE);
+  // The cells with no resolved 8-neighbour (the grid's edge does not count as resolved).
+  cv::Mat1b interior;
+  cv::erode(unresolved, interior, cv::Mat());
   std::vector<uint8_t> thin(static_cast<size_t>(count), 1), touches_obstacle(static_cast<size_t>(count), 0);
   for (int row = 0; row < classes.rows; ++row) {
     for (int col = 0; col < classes.cols; ++col) {
       const int label = labels(row, col);
       if (label == 0) continue;
-      if (depth(row, col) > kSeamHalfWidthCells) thin[label] = 0;
+      if (interior(row, col)) thin[label] = 0;
       if (touches_obstacle[label]) continue;
       for (int dr = -1; dr <= 1; ++dr) {
         for (int dc = -1; dc <= 1; ++dc) {

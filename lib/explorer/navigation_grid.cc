@@ -10,12 +10,19 @@ namespace {
 // Metres from each cell centre to the near edge of the nearest cell where `is_clear` is 0; the
 // grid's border counts as not clear, so nothing plans off the map.
 cv::Mat1f distanceToBlocked(const cv::Mat1b& is_clear, double resolution) {
-  cv::Mat1b padded;
-  cv::copyMakeBorder(is_clear, padded, 1, 1, 1, 1, cv::BORDER_CONSTANT, cv::Scalar(0));
-  cv::Mat1f cells;
-  cv::distanceTransform(padded, cells, cv::DIST_L2, cv::DIST_MASK_PRECISE);
-  cv::Mat1f metres = cells(cv::Rect(1, 1, is_clear.cols, is_clear.rows)).clone();
-  metres = (metres - 0.5f) * static_cast<float>(resolution);
+  cv::Mat1f cells(is_clear.size(), 0.0f);
+  // Only over the clear cells' bounding box, with a blocked ring around it: the nearest blocked
+  // cell of a cell inside is on the ring or nearer. The free floor is often a small part of a
+  // map that far readings have stretched.
+  const cv::Rect clear = cv::boundingRect(is_clear);
+  if (!clear.empty()) {
+    cv::Mat1b padded;
+    cv::copyMakeBorder(is_clear(clear), padded, 1, 1, 1, 1, cv::BORDER_CONSTANT, cv::Scalar(0));
+    cv::Mat1f distances;
+    cv::distanceTransform(padded, distances, cv::DIST_L2, cv::DIST_MASK_PRECISE);
+    distances(cv::Rect(1, 1, clear.width, clear.height)).copyTo(cells(clear));
+  }
+  cv::Mat1f metres = (cells - 0.5f) * static_cast<float>(resolution);
   return metres;
 }
 

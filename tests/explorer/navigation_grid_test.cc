@@ -71,6 +71,21 @@ TEST(NavigationGridTest, ClearanceIsTheDistanceToTheNearestCellThatIsNotFree) {
   EXPECT_NEAR(grid.clearance(10, 10), -0.05, 1e-6);  // blocked cells have no clearance
 }
 
+TEST(NavigationGridTest, ClearanceOfFreePatchesInUnknownCountsUnknownAndTheGridEdgeAsBlocked) {
+  TestGrid cells(40, 40);  // unknown but for two patches of free floor, 0.1 m cells
+  cells.free(10, 5, 19, 8).free(0, 36, 3, 39);
+  const NavigationGrid grid(cells.grid(), {}, NavigationGridOptions{});
+  EXPECT_NEAR(grid.clearance(12, 6), 0.15, 1e-6);  // row 4 two cells away: (2 - 0.5) x 0.1
+  EXPECT_NEAR(grid.clearance(14, 7), 0.15, 1e-6);  // row 9
+  EXPECT_NEAR(grid.clearance(10, 5), 0.05, 1e-6);  // in the patch's corner
+  EXPECT_NEAR(grid.clearance(1, 38), 0.15, 1e-6);  // the grid's edges two cells away
+  EXPECT_NEAR(grid.clearance(3, 36), 0.05, 1e-6);
+  EXPECT_NEAR(grid.clearance(30, 30), -0.05, 1e-6);  // unknown
+  EXPECT_NEAR(grid.clearance(9, 5), -0.05, 1e-6);
+  // Unknown is no obstacle: the distance to obstacles runs to the grid's edge.
+  EXPECT_NEAR(grid.obstacleDistance(12, 6), 0.65, 1e-6);  // the south edge, 7 cells away
+}
+
 TEST(NavigationGridTest, SmallUnknownIslandsInsideFreeSpaceAreFreeButNotThoseTouchingObstacles) {
   TestGrid cells(20, 20);
   cells.free(0, 0, 19, 19).unknown(5, 5, 6, 6).unknown(10, 5, 12, 6).unknown(15, 5, 15, 5).occupied(16, 5, 16, 5);
