@@ -87,25 +87,32 @@ void NavigationGrid::computeDistances() {
 }
 
 void NavigationGrid::freeIslands(const cv::Mat1b& is_island, int connectivity, int max_cells) {
+  // An island borders free cells only, so it lies inside the free cells' bounding box, and a
+  // region that reaches the box's edge is none (its neighbour beyond is not free): only the box
+  // is labelled.
+  const cv::Rect box = cv::boundingRect(cell_class_ == kFree);
+  if (box.empty()) return;
   cv::Mat1i labels;
   cv::Mat stats, centroids;
-  const int count = cv::connectedComponentsWithStats(is_island, labels, stats, centroids, connectivity, CV_32S);
+  const int count = cv::connectedComponentsWithStats(is_island(box), labels, stats, centroids, connectivity, CV_32S);
   std::vector<uint8_t> frees(static_cast<size_t>(count), 0);
   for (int label = 1; label < count; ++label) frees[label] = stats.at<int>(label, cv::CC_STAT_AREA) <= max_cells;
   static const int kNeighbours[8][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}, {1, 1}, {1, -1}, {-1, 1}, {-1, -1}};
-  for (int row = 0; row < height(); ++row) {
-    for (int col = 0; col < width(); ++col) {
+  cv::Mat1b classes = cell_class_(box);  // a view: the islands are freed through it
+  for (int row = 0; row < box.height; ++row) {
+    for (int col = 0; col < box.width; ++col) {
       const int label = labels(row, col);
       if (label == 0 || !frees[label]) continue;
       for (int i = 0; i < connectivity; ++i) {
         const int c = col + kNeighbours[i][0], r = row + kNeighbours[i][1];
-        if (!contains(c, r) || (cell_class_(r, c) != kFree && labels(r, c) != label)) frees[label] = 0;
+        const bool inside = c >= 0 && r >= 0 && c < box.width && r < box.height;
+        if (!inside || (classes(r, c) != kFree && labels(r, c) != label)) frees[label] = 0;
       }
     }
   }
-  for (int row = 0; row < height(); ++row) {
-    for (int col = 0; col < width(); ++col) {
-      if (frees[labels(row, col)]) cell_class_(row, col) = kFree;
+  for (int row = 0; row < box.height; ++row) {
+    for (int col = 0; col < box.width; ++col) {
+      if (frees[labels(row, col)]) classes(row, col) = kFree;
     }
   }
 }

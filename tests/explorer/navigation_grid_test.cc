@@ -99,6 +99,19 @@ TEST(NavigationGridTest, SmallUnknownIslandsInsideFreeSpaceAreFreeButNotThoseTou
   EXPECT_EQ(NavigationGrid(cells.grid(), {}, options).cellClass(5, 5), NavigationGrid::kUnknown);
 }
 
+TEST(NavigationGridTest, UnknownNotchesInTheEdgeOfTheFreeFloorAreNoIslands) {
+  TestGrid cells(30, 30);  // a free patch in unknown, with notches of unknown cells in its edges
+  cells.free(5, 5, 20, 15).unknown(5, 9, 5, 9).unknown(12, 15, 13, 15).unknown(20, 7, 20, 7).unknown(10, 10, 11, 10);
+  NavigationGridOptions options;
+  options.max_hole_cells = 4;
+  const NavigationGrid grid(cells.grid(), {}, options);
+  EXPECT_EQ(grid.cellClass(5, 9), NavigationGrid::kUnknown);   // west edge: beyond it is unknown
+  EXPECT_EQ(grid.cellClass(12, 15), NavigationGrid::kUnknown);  // north edge
+  EXPECT_EQ(grid.cellClass(20, 7), NavigationGrid::kUnknown);   // east edge
+  EXPECT_EQ(grid.cellClass(10, 10), NavigationGrid::kFree);     // a hole amid free cells
+  EXPECT_EQ(grid.cellClass(11, 10), NavigationGrid::kFree);
+}
+
 TEST(NavigationGridTest, FreeingSpecksClearsLoneObstacleCellsOnlyAndTheClearanceWithThem) {
   TestGrid cells(30, 20);
   cells.free(0, 0, 29, 19)
