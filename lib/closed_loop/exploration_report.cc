@@ -8,12 +8,19 @@
 
 namespace stereonav {
 
+double ExplorationReport::speedUp() const { return wall_time_s > 0.0 ? sim_time_s / wall_time_s : 0.0; }
+
+double ExplorationReport::speedUpWithoutRendering() const {
+  const double robot_s = wall_time_s - render_wall_s;
+  return robot_s > 0.0 ? sim_time_s / robot_s : 0.0;
+}
+
 std::string ExplorationReport::summary() const {
   std::ostringstream text;
   text << std::fixed << std::setprecision(1) << "explored " << coverage.free_area_m2 << " m2 free ("
        << 100.0 * coverage.coverage << "% of the reachable free space; " << 100.0 * coverage.seen_coverage
        << "% seen), drove " << distance_m << " m in " << sim_time_s << " s simulated (" << wall_time_s
-       << " s wall), " << collisions << " collision(s), pose error RMS " << std::setprecision(3)
+       << " s wall, " << render_wall_s << " s of it rendering), " << collisions << " collision(s), pose error RMS " << std::setprecision(3)
        << trajectory_error.rms_m << " m (max " << trajectory_error.max_m << " m); stopped: " << stop_reason;
   return text.str();
 }
@@ -31,6 +38,7 @@ std::string ExplorationReport::toJson() const {
       .key("distance_m").value(distance_m)
       .key("sim_time_s").value(sim_time_s)
       .key("wall_time_s").value(wall_time_s)
+      .key("render_wall_s").value(render_wall_s)
       .key("collisions").value(collisions)
       .key("collision_events").beginArray();
   for (const CollisionEvent& event : collision_events) {

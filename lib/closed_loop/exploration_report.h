@@ -26,6 +26,10 @@ struct ExplorationReport {
   double distance_m = 0.0;
   double sim_time_s = 0.0;
   double wall_time_s = 0.0;
+  // Of wall_time_s, the simulator drawing the camera images: what a robot with real cameras
+  // would not spend. The rest is the robot's own software (stereo, mapping, explorer) and the
+  // simulated motion.
+  double render_wall_s = 0.0;
   double top_speed_mps = 0.0;
   double frame_rate_hz = 0.0;
   double pipeline_ms_per_frame = 0.0;  // the mapping pipeline alone
@@ -38,6 +42,10 @@ struct ExplorationReport {
   int blocked_reversals = 0;    // times the explorer found itself blocked and reversed
   std::string stop_reason;
   bool interrupted = false;  // stopped by ExplorationCallbacks::stop_requested
+
+  // Simulated seconds per wall-clock second, of the whole run and of the run without rendering.
+  double speedUp() const;
+  double speedUpWithoutRendering() const;
 
   std::string summary() const;
   std::string toJson() const;

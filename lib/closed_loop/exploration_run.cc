@@ -202,7 +202,9 @@ ExplorationReport runExploration(const World& world, const ExplorationConfig& co
   double next_coverage_sample_s = job.coverage_sample_period_s;
   while (true) {
     if (simulation.frameDue()) {
+      const auto render_start = std::chrono::steady_clock::now();
       const SimulatedFrame frame = simulation.renderFrame();
+      report.render_wall_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - render_start).count();
       if (recorder) recorder->record(frame);
       map_path.push_back(mapper.process(frame));
       true_path.push_back(frame.true_pose);

@@ -50,6 +50,10 @@ TEST(ExplorationBenchmarkTest, EveryRunIsTabledSummarisedAndDrawn) {
     EXPECT_EQ(run.error, "");
     EXPECT_GT(run.report.coverage.coverage, 0.0);
     EXPECT_NEAR(run.report.sim_time_s, 6.0, 0.5);
+    // Rendering is part of the run's time, not all of it.
+    EXPECT_GT(run.report.render_wall_s, 0.0);
+    EXPECT_LT(run.report.render_wall_s, run.report.wall_time_s);
+    EXPECT_GT(run.report.speedUpWithoutRendering(), run.report.speedUp());
     const std::string prefix = (directory / ("world_" + std::to_string(run.world_seed) + "_seed_" +
                                              std::to_string(run.run_seed))).string();
     EXPECT_TRUE(std::filesystem::exists(prefix + ".path.png"));
@@ -66,6 +70,8 @@ TEST(ExplorationBenchmarkTest, EveryRunIsTabledSummarisedAndDrawn) {
   const std::string summary = readFile((directory / "summary.md").string());
   EXPECT_EQ(count(summary, "| apartment |") + count(summary, "| hall |"), 4u);
   EXPECT_NE(summary.find("4 runs: mean coverage"), std::string::npos);
+  EXPECT_NE(summary.find("x without the simulator's rendering)"), std::string::npos);
+  EXPECT_NE(csv.find(",wall_time_s,render_wall_s,"), std::string::npos);
   const cv::Mat montage = readImageFile((directory / "montage.png").string(), cv::IMREAD_COLOR);
   EXPECT_EQ(montage.cols, 2 * 320);  // two tiles a row
   EXPECT_EQ(montage.rows, 2 * (320 + 22));
