@@ -50,11 +50,6 @@ constexpr std::array<std::array<int, 2>, 12> kEdges{{{0, 1}, {2, 3}, {4, 5}, {6,
 
 RayCaster::RayCaster(const World& world) : world_(world) {}
 
-const Solid& RayCaster::solid(int index) const {
-  const int static_count = static_cast<int>(world_.solids.size());
-  return index < static_count ? world_.solids[index] : moving_[index - static_count];
-}
-
 void RayCaster::cast(const PixelRays& rays) {
   rays_ = rays;
   hits_.assign(static_cast<size_t>(rays.width) * rays.height, PixelHit{kNoHit, kNothing, 0});
@@ -170,33 +165,6 @@ void RayCaster::addSegment(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
   }
   first_row_ = std::min(first_row_, row_begin);
   last_row_ = std::max(last_row_, row_end);
-}
-
-RayHit RayCaster::hit(int x, int y) const {
-  const PixelHit& pixel = hits_[static_cast<size_t>(y) * rays_.width + x];
-  const Ray ray = rays_.ray(x, y);
-  RayHit hit;
-  hit.t = pixel.t;
-  switch (pixel.source) {
-    case kNothing:
-      break;
-    case kFloor:
-    case kCeiling:
-      hit.surface.position = ray.origin + pixel.t * ray.direction;
-      hit.surface.normal = Eigen::Vector3d(0.0, 0.0, pixel.source == kFloor ? 1.0 : -1.0);
-      hit.surface.u = hit.surface.position.x();
-      hit.surface.v = hit.surface.position.y();
-      hit.texture = pixel.source == kFloor ? world_.floor_texture : world_.ceiling_texture;
-      break;
-    default: {
-      const Solid& hit_solid = solid(pixel.source);
-      hit.surface = surfaceOfSolid(hit_solid, pixel.face, ray, pixel.t);
-      hit.texture = hit_solid.texture;
-      hit.texture_offset = hit_solid.texture_offset;
-      break;
-    }
-  }
-  return hit;
 }
 
 }  // namespace stereonav

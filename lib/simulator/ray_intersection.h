@@ -2,6 +2,7 @@
 
 #include <Eigen/Core>
 
+#include <cmath>
 #include <limits>
 
 #include "simulator/world.h"
@@ -47,7 +48,48 @@ struct SurfacePoint {
 // Side faces: v is the height above the floor and u the horizontal distance from the middle of the
 // face, increasing to the right as seen from the front (box faces), or the arc length
 // counter-clockwise from the solid's +x direction (cylinders). Top and bottom faces: u, v are
-// x, y relative to the solid's centre, along the world axes.
-SurfacePoint surfaceOfSolid(const Solid& solid, int face, const Ray& ray, double t);
+// x, y relative to the solid's centre, along the world axes. Inline: the renderer calls it for
+// every pixel that sees a solid.
+inline SurfacePoint surfaceOfSolid(const Solid& solid, int face, const Ray& ray, double t) {
+  SurfacePoint point;
+  point.position = ray.origin + t * ray.direction;
+  const double px = point.position.x() - solid.x;
+  const double py = point.position.y() - solid.y;
+  if (face == kFaceTop || face == kFaceBottom) {
+    point.normal = Eigen::Vector3d(0.0, 0.0, face == kFaceTop ? 1.0 : -1.0);
+    point.u = px;
+    point.v = py;
+    return point;
+  }
+  point.v = point.position.z();
+  if (solid.shape == Solid::Shape::kCylinder) {
+    point.normal = Eigen::Vector3d(px / solid.radius, py / solid.radius, 0.0);
+    point.u = solid.radius * std::atan2(py, px);
+    return point;
+  }
+  const double local_x = solid.cos_yaw * px + solid.sin_yaw * py;
+  const double local_y = -solid.sin_yaw * px + solid.cos_yaw * py;
+  const Eigen::Vector3d axis_x(solid.cos_yaw, solid.sin_yaw, 0.0);
+  const Eigen::Vector3d axis_y(-solid.sin_yaw, solid.cos_yaw, 0.0);
+  switch (face) {
+    case kFacePlusX:
+      point.normal = axis_x;
+      point.u = local_y;
+      break;
+    case kFaceMinusX:
+      point.normal = -axis_x;
+      point.u = -local_y;
+      break;
+    case kFacePlusY:
+      point.normal = axis_y;
+      point.u = -local_x;
+      break;
+    default:
+      point.normal = -axis_y;
+      point.u = local_x;
+      break;
+  }
+  return point;
+}
 
 }  // namespace stereonav
