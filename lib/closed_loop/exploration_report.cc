@@ -20,8 +20,8 @@ std::string ExplorationReport::summary() const {
   text << std::fixed << std::setprecision(1) << "explored " << coverage.free_area_m2 << " m2 free ("
        << 100.0 * coverage.coverage << "% of the reachable free space; " << 100.0 * coverage.seen_coverage
        << "% seen), drove " << distance_m << " m in " << sim_time_s << " s simulated (" << wall_time_s
-       << " s wall, " << render_wall_s << " s of it rendering), " << collisions << " collision(s), pose error RMS " << std::setprecision(3)
-       << trajectory_error.rms_m << " m (max " << trajectory_error.max_m << " m); stopped: " << stop_reason;
+       << " s wall, " << render_wall_s << " s of it rendering), " << collisions << " collision(s), pose error RMS "
+       << std::setprecision(3) << trajectory_error.rms_m << " m (max " << trajectory_error.max_m << " m); stopped: " << stop_reason;
   return text.str();
 }
 

@@ -13,7 +13,7 @@ namespace {
 // far views keep redrawing such bands the robot would tour finished rooms. A seam: a connected
 // region of unresolved cells each of which has a resolved cell among its 8 neighbours (none is
 // farther than 1.5 cells from one), touching a precise obstacle.
-
+//
 // Per cell: the label of the unresolved region of an opening it is in, 0 otherwise (resolved, or
 // in a seam); `areas` gets each label's cell count.
 cv::Mat1i openingRegions(const NavigationGrid& grid, std::vector<int>& areas) {

@@ -66,7 +66,7 @@ class RigRenderer {
   SensorOptions sensor_;
   RayCaster ray_caster_;
   cv::RNG noise_;
-  // A camera row's lit pixels: what to sample, where, and their shading.
+  // The pixels of a camera row that see a surface: what to sample, their columns and shading.
   AlbedoSampler albedo_sampler_;
   std::vector<AlbedoQuery> queries_;
   std::vector<int> query_columns_;

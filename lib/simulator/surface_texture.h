@@ -82,8 +82,8 @@ SurfaceTexture loadSurfaceTexture(IniSection& section);
 
 // Lattice value noise in [-1, 1], smooth between integer lattice points.
 double valueNoise(double x, double y, uint32_t seed);
-// valueNoise of n points, into `noise`; every array holds at least roundUp(n, kNoiseLanes)
-// elements (the lanes past n are computed and ignored).
+// valueNoise of n points, into `noise`; every array holds n rounded up to a multiple of
+// kNoiseLanes elements (the lanes past n are computed and ignored).
 constexpr size_t kNoiseLanes = 4;
 void valueNoise(const double* x, const double* y, const uint32_t* seed, double* noise, size_t n);
 
