@@ -84,6 +84,11 @@ double stripes(const SurfaceTexture& texture, double u, double v, double footpri
   return 2.0 * lit - 1.0;
 }
 
+// A texture's albedo for a signal in [-1, 1] (noise or stripes) around its mean.
+double albedoOfSignal(const SurfaceTexture& texture, double signal) {
+  return std::clamp(texture.mean + texture.contrast * signal, 0.0, 1.0);
+}
+
 }  // namespace
 
 // Built for AVX2 as well (chosen at load time): the lanes then fill whole vector registers. Not
@@ -164,8 +169,7 @@ void AlbedoSampler::sample(const std::vector<AlbedoQuery>& queries, std::vector<
         albedos[i] = texture.mean;
         continue;
       case SurfaceTexture::Kind::kStripes:
-        albedos[i] = std::clamp(
-            texture.mean + texture.contrast * stripes(texture, query.u, query.v, query.footprint_m), 0.0, 1.0);
+        albedos[i] = albedoOfSignal(texture, stripes(texture, query.u, query.v, query.footprint_m));
         continue;
       case SurfaceTexture::Kind::kPoster: {
         const auto& rect = texture.poster_rect;
@@ -217,7 +221,7 @@ void AlbedoSampler::sample(const std::vector<AlbedoQuery>& queries, std::vector<
     const SurfaceTexture& texture = *queries[noisy_[j]].texture;
     // Interpolated value noise has a standard deviation near 1/3 per octave.
     const double signal = sum * 3.0 / std::sqrt(static_cast<double>(texture.scales_m.size()));
-    albedos[noisy_[j]] = std::clamp(texture.mean + texture.contrast * signal, 0.0, 1.0);
+    albedos[noisy_[j]] = albedoOfSignal(texture, signal);
   }
 }
 
