@@ -67,6 +67,8 @@ void rejectInconsistentMatches(cv::Mat1f& disparity, const cv::Mat1f& swapped, c
   CV_Assert(disparity.size() == swapped.size());
   const int width = disparity.cols, height = disparity.rows;
   const cv::Range tested = rowsOf(rows, height);
+  const float bx = static_cast<float>(first.bx), by = static_cast<float>(first.by);
+  const float limit = static_cast<float>(max_difference);
   for (int y = tested.start; y < tested.end; ++y) {
     float* row = disparity.ptr<float>(y);
     for (int x = 0; x < width; ++x) {
@@ -75,12 +77,13 @@ void rejectInconsistentMatches(cv::Mat1f& disparity, const cv::Mat1f& swapped, c
       // for these coordinates; an invalid swapped disparity (+inf) fails the comparison.
       const float d = row[x];
       const bool valid = isValidDisparity(d);
-      const double shift = valid ? d : 0.0;
-      const int xs = cvFloor(x - first.bx * shift + 0.5), ys = cvFloor(y - first.by * shift + 0.5);
+      const float shift = valid ? d : 0.0f;
+      const int xs = cvFloor(static_cast<float>(x) - bx * shift + 0.5f);
+      const int ys = by == 0.0f ? y : cvFloor(static_cast<float>(y) - by * shift + 0.5f);
       const bool inside = valid && static_cast<unsigned>(xs) < static_cast<unsigned>(width) &&
                           static_cast<unsigned>(ys) < static_cast<unsigned>(height);
       const float seen = swapped(inside ? ys : 0, inside ? xs : 0);
-      row[x] = inside && std::abs(seen - d) <= max_difference ? d : kInvalidDisparity;
+      row[x] = inside && std::abs(seen - d) <= limit ? d : kInvalidDisparity;
     }
   }
 }
