@@ -15,7 +15,8 @@ CostToGoField::CostToGoField(const NavigationGrid& grid, const CostToGoOptions& 
   for (int row = 0; row < grid.height(); ++row) {
     for (int col = 0; col < grid.width(); ++col) {
       traversable_(row, col) = grid.clearance(col, row) >= options.body_radius_m ? 1 : 0;
-      if (options.repulsion_distance_m <= 0.0) continue;
+      // Steps are taken between traversable cells only.
+      if (!traversable_(row, col) || options.repulsion_distance_m <= 0.0) continue;
       const double beyond = grid.obstacleDistance(col, row) - options.body_radius_m;
       const double s = std::max(0.0, 1.0 - beyond / options.repulsion_distance_m);
       step_weight_(row, col) = static_cast<float>(1.0 + options.repulsion_weight * std::min(1.0, s) * std::min(1.0, s));

@@ -24,22 +24,20 @@ cv::Mat1i openingRegions(const NavigationGrid& grid, std::vector<int>& areas) {
   const int count = cv::connectedComponentsWithStats(unresolved, labels, stats, centroids, 8, CV_32S);
   areas.assign(static_cast<size_t>(count), 0);
   for (int label = 1; label < count; ++label) areas[label] = stats.at<int>(label, cv::CC_STAT_AREA);
-  // The cells with no resolved 8-neighbour (the grid's edge does not count as resolved).
-  cv::Mat1b interior;
+  // The cells with no resolved 8-neighbour (the grid's edge does not count as resolved), and
+  // those with a precise obstacle among their 8 neighbours (nothing beyond the edge).
+  cv::Mat1b interior, beside_obstacle;
   cv::erode(unresolved, interior, cv::Mat());
+  cv::dilate(classes == NavigationGrid::kOccupied, beside_obstacle, cv::Mat());
   std::vector<uint8_t> thin(static_cast<size_t>(count), 1), touches_obstacle(static_cast<size_t>(count), 0);
   for (int row = 0; row < classes.rows; ++row) {
+    const int* label_row = labels[row];
+    const uint8_t* interior_row = interior[row];
+    const uint8_t* beside_row = beside_obstacle[row];
     for (int col = 0; col < classes.cols; ++col) {
-      const int label = labels(row, col);
-      if (label == 0) continue;
-      if (interior(row, col)) thin[label] = 0;
-      if (touches_obstacle[label]) continue;
-      for (int dr = -1; dr <= 1; ++dr) {
-        for (int dc = -1; dc <= 1; ++dc) {
-          const int c = col + dc, r = row + dr;
-          if (grid.contains(c, r) && classes(r, c) == NavigationGrid::kOccupied) touches_obstacle[label] = 1;
-        }
-      }
+      const int label = label_row[col];
+      if (interior_row[col]) thin[label] = 0;
+      if (beside_row[col]) touches_obstacle[label] = 1;
     }
   }
   for (int row = 0; row < classes.rows; ++row) {
@@ -79,10 +77,12 @@ std::vector<Frontier> findFrontiers(const NavigationGrid& grid, int min_cells) {
   std::vector<int> areas;
   const cv::Mat1i regions = openingRegions(grid, areas);
   // Per cell: the area it borders (0 if it is no frontier cell) and whether it faces unknown.
+  // Only free cells border anything.
   cv::Mat1i bordered(grid.height(), grid.width(), 0);
   cv::Mat1b faces_unknown(grid.height(), grid.width(), uint8_t{0});
-  for (int row = 0; row < grid.height(); ++row) {
-    for (int col = 0; col < grid.width(); ++col) {
+  const cv::Rect free_cells = cv::boundingRect(grid.cellClasses() == NavigationGrid::kFree);
+  for (int row = free_cells.y; row < free_cells.y + free_cells.height; ++row) {
+    for (int col = free_cells.x; col < free_cells.x + free_cells.width; ++col) {
       const OpeningBorder border = openingBorder(grid, regions, areas, col, row);
       bordered(row, col) = border.area;
       faces_unknown(row, col) = border.unknown;

@@ -23,24 +23,30 @@ void NearObstacleMemory::update(const std::vector<mrpt::math::TPoint2D>& sensed,
     ++count[bin];
   }
 
-  for (auto it = cells_.begin(); it != cells_.end();) {
+  const auto seenPast = [&](const Cell& cell) {
     double x = 0.0, y = 0.0;
-    pose.inverseComposePoint(it->second.point.x, it->second.point.y, x, y);
+    pose.inverseComposePoint(cell.point.x, cell.point.y, x, y);
     const double range = std::hypot(x, y);
-    bool seen_past = false;
-    if (range >= options_.judge_beyond_m && range <= options_.remember_within_m) {
-      // The bin of the point and its neighbours on both sides: the window around its bearing.
-      const int centre = binOf(std::atan2(y, x));
-      int points = 0;
-      double closest = std::numeric_limits<double>::infinity();
-      for (int offset = -1; offset <= 1; ++offset) {
-        const int bin = ((centre + offset) % bins + bins) % bins;
-        points += count[bin];
-        closest = std::min(closest, nearest[bin]);
-      }
-      seen_past = points >= 2 && closest > range + options_.see_through_margin_m;
+    if (range < options_.judge_beyond_m || range > options_.remember_within_m) return false;
+    // The bin of the point and its neighbours on both sides: the window around its bearing.
+    const int centre = binOf(std::atan2(y, x));
+    int points = 0;
+    double closest = std::numeric_limits<double>::infinity();
+    for (int offset = -1; offset <= 1; ++offset) {
+      const int bin = ((centre + offset) % bins + bins) % bins;
+      points += count[bin];
+      closest = std::min(closest, nearest[bin]);
     }
-    it = seen_past ? cells_.erase(it) : std::next(it);
+    return points >= 2 && closest > range + options_.see_through_margin_m;
+  };
+  // Only points within remember_within_m are judged: the cells around the robot, not the whole
+  // memory, which grows with the building.
+  const KeySquare keys = keysNear(pose.x(), pose.y(), options_.remember_within_m);
+  for (long col = keys.first_col; col <= keys.last_col; ++col) {
+    const auto end = cells_.upper_bound({col, keys.last_row});
+    for (auto it = cells_.lower_bound({col, keys.first_row}); it != end;) {
+      it = seenPast(it->second) ? cells_.erase(it) : std::next(it);
+    }
   }
 
   for (const mrpt::math::TPoint2D& point : sensed) {
@@ -77,6 +83,25 @@ size_t NearObstacleMemory::forgetUnconfirmed(const std::function<bool(double x, 
     it = cells_.erase(it);
   }
   return forgotten;
+}
+
+NearObstacleMemory::KeySquare NearObstacleMemory::keysNear(double x, double y, double radius) const {
+  // A cell's point lies within half a cell of the cell's key: keys one beyond the square of
+  // `radius` hold every point within it.
+  return {std::lround((x - radius) / options_.cell_m) - 1, std::lround((x + radius) / options_.cell_m) + 1,
+          std::lround((y - radius) / options_.cell_m) - 1, std::lround((y + radius) / options_.cell_m) + 1};
+}
+
+std::vector<mrpt::math::TPoint2D> NearObstacleMemory::pointsNear(double x, double y, double radius) const {
+  std::vector<mrpt::math::TPoint2D> points;
+  const KeySquare keys = keysNear(x, y, radius);
+  for (long col = keys.first_col; col <= keys.last_col; ++col) {
+    const auto end = cells_.upper_bound({col, keys.last_row});
+    for (auto it = cells_.lower_bound({col, keys.first_row}); it != end; ++it) {
+      if (it->second.remembered) points.push_back(it->second.point);
+    }
+  }
+  return points;
 }
 
 std::vector<mrpt::math::TPoint2D> NearObstacleMemory::points() const {

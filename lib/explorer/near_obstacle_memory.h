@@ -54,6 +54,9 @@ class NearObstacleMemory {
 
   // The remembered points, map frame.
   std::vector<mrpt::math::TPoint2D> points() const;
+  // The remembered points within `radius` of map point (x, y), and some a little farther; in the
+  // order points() gives them.
+  std::vector<mrpt::math::TPoint2D> pointsNear(double x, double y, double radius) const;
   size_t size() const;
 
  private:
@@ -62,6 +65,12 @@ class NearObstacleMemory {
     mrpt::math::TPoint2D first_view;  // where the robot stood when it first saw it
     bool remembered = false;
   };
+
+  // The keys of the cells whose points may lie within `radius` of (x, y).
+  struct KeySquare {
+    long first_col, last_col, first_row, last_row;
+  };
+  KeySquare keysNear(double x, double y, double radius) const;
 
   NearObstacleMemoryOptions options_;
   std::map<std::pair<long, long>, Cell> cells_;  // remembered points and candidates

@@ -68,7 +68,7 @@ VelocityCommand SafetyGuard::guard(VelocityCommand command, const mrpt::poses::C
   for (const auto& scan : recent_scans_) {
     for (const mrpt::math::TPoint2D& point : scan.second) add(point);
   }
-  for (const mrpt::math::TPoint2D& point : near_obstacles_.points()) add(point);
+  for (const mrpt::math::TPoint2D& point : near_obstacles_.pointsNear(pose.x(), pose.y(), reach)) add(point);
   const double radius = options_.robot_radius_m, margin = options_.guard_margin_m;
   const double horizon = options_.guard_horizon_m;
   const FreeTravel free = stereonav::freeTravel(local, radius, margin, command.speed, command.turn_rate, horizon);

@@ -126,5 +126,62 @@ TEST(NearObstacleMemory, ForgetsWhatTheMapNoLongerHolds) {
   for (const auto& point : points) EXPECT_GT(point.x, 1.5);
 }
 
+TEST(NearObstacleMemory, PointsNearAPlaceAreThoseOfAllPointsWithinTheRadiusInTheSameOrder) {
+  NearObstacleMemory memory{NearObstacleMemoryOptions{}};
+  // A lattice of points 7 cm apart around the origin, on both sides of zero and off the 5 cm cells'
+  // centres, several of them within a few millimetres of the radius.
+  std::vector<mrpt::math::TPoint2D> lattice;
+  for (int i = -40; i <= 40; ++i) {
+    for (int j = -40; j <= 40; ++j) lattice.emplace_back(0.07 * i + 0.013, 0.07 * j - 0.021);
+  }
+  memory.remember(lattice);
+  const std::vector<mrpt::math::TPoint2D> all = memory.points();
+  for (const mrpt::math::TPoint2D centre : {mrpt::math::TPoint2D(0.0, 0.0), mrpt::math::TPoint2D(-1.234, 0.871),
+                                            mrpt::math::TPoint2D(2.6, -2.6)}) {
+    for (const double radius : {0.0, 0.05, 0.5, 1.3}) {
+      std::vector<mrpt::math::TPoint2D> expected;
+      for (const auto& point : all) {
+        if (std::hypot(point.x - centre.x, point.y - centre.y) <= radius) expected.push_back(point);
+      }
+      std::vector<mrpt::math::TPoint2D> within;
+      for (const auto& point : memory.pointsNear(centre.x, centre.y, radius)) {
+        if (std::hypot(point.x - centre.x, point.y - centre.y) <= radius) within.push_back(point);
+      }
+      ASSERT_EQ(within.size(), expected.size()) << centre.x << " " << centre.y << " r " << radius;
+      for (size_t k = 0; k < within.size(); ++k) {
+        EXPECT_EQ(within[k].x, expected[k].x);
+        EXPECT_EQ(within[k].y, expected[k].y);
+      }
+    }
+  }
+  EXPECT_FALSE(memory.pointsNear(0.0, 0.0, 1.0).empty());
+  EXPECT_TRUE(memory.pointsNear(10.0, 10.0, 1.0).empty());
+}
+
+TEST(NearObstacleMemory, AViewJudgesPointsUpToItsRangeWhereverTheyAre) {
+  // Points at 1.99 m (just within the 2 m judged) around a robot away from the origin, at every
+  // bearing: a scan that sees past them all forgets them all, and only them.
+  NearObstacleMemory memory{NearObstacleMemoryOptions{}};
+  const mrpt::poses::CPose2D pose(-3.27, 5.11, 0.4);
+  std::vector<mrpt::math::TPoint2D> ring, beyond;
+  for (int k = 0; k < 24; ++k) {
+    const double bearing = k * M_PI / 12;
+    ring.emplace_back(pose.x() + 1.99 * std::cos(bearing), pose.y() + 1.99 * std::sin(bearing));
+    beyond.emplace_back(pose.x() + 2.2 * std::cos(bearing + 0.13), pose.y() + 2.2 * std::sin(bearing + 0.13));
+  }
+  memory.remember(ring);
+  memory.remember(beyond);
+  ASSERT_EQ(memory.size(), 48u);
+  // The scan: a circle of wall 3 m out, a point per degree.
+  std::vector<mrpt::math::TPoint2D> scan;
+  for (int degree = 0; degree < 360; ++degree) {
+    scan.emplace_back(3.0 * std::cos(degree * M_PI / 180), 3.0 * std::sin(degree * M_PI / 180));
+  }
+  memory.update(scan, pose, everywhere);
+  const auto kept = memory.points();
+  ASSERT_EQ(kept.size(), 24u);
+  for (const auto& point : kept) EXPECT_NEAR(std::hypot(point.x - pose.x(), point.y - pose.y()), 2.2, 1e-9);
+}
+
 }  // namespace
 }  // namespace stereonav
