@@ -1,10 +1,8 @@
 #include "explorer/cost_to_go_field.h"
 
+#include <algorithm>
 #include <cmath>
-#include <functional>
 #include <limits>
-#include <queue>
-#include <utility>
 
 namespace stereonav {
 
@@ -24,44 +22,138 @@ CostToGoField::CostToGoField(const NavigationGrid& grid, const CostToGoOptions& 
   }
 }
 
+namespace {
+
+// The open cells of the wavefront, lowest (cost, index) first: a 4-ary heap that lowers a cell's
+// cost in place, so each cell is in it at most once (a std::priority_queue keeps every stale
+// entry). Pairs are ordered as std::pair orders them, the cell index breaking ties, so cells
+// leave in exactly the order a priority queue of pairs gives.
+class OpenCells {
+ public:
+  explicit OpenCells(size_t cells) : position_(cells, kAbsent) {}
+
+  bool empty() const { return heap_.empty(); }
+
+  // Adds `index` at `cost`, or lowers its cost if it is open already.
+  void lower(int index, double cost) {
+    size_t at = position_[static_cast<size_t>(index)];
+    if (at == kAbsent) {
+      at = heap_.size();
+      heap_.push_back({cost, index});
+    } else {
+      heap_[at].cost = cost;
+    }
+    siftUp(at);
+  }
+
+  // Removes and returns the lowest cell.
+  int pop() {
+    const int index = heap_.front().index;
+    position_[static_cast<size_t>(index)] = kAbsent;
+    const Entry last = heap_.back();
+    heap_.pop_back();
+    if (!heap_.empty()) {
+      heap_.front() = last;
+      siftDown(0);
+    }
+    return index;
+  }
+
+ private:
+  struct Entry {
+    double cost;
+    int index;
+    bool operator<(const Entry& other) const {
+      return cost < other.cost || (cost == other.cost && index < other.index);
+    }
+  };
+  static constexpr size_t kAbsent = static_cast<size_t>(-1);
+  static constexpr size_t kArity = 4;
+
+  void place(size_t at, const Entry& entry) {
+    heap_[at] = entry;
+    position_[static_cast<size_t>(entry.index)] = at;
+  }
+  void siftUp(size_t at) {
+    const Entry entry = heap_[at];
+    while (at > 0) {
+      const size_t parent = (at - 1) / kArity;
+      if (!(entry < heap_[parent])) break;
+      place(at, heap_[parent]);
+      at = parent;
+    }
+    place(at, entry);
+  }
+  void siftDown(size_t at) {
+    const Entry entry = heap_[at];
+    const size_t size = heap_.size();
+    while (true) {
+      const size_t first = at * kArity + 1;
+      if (first >= size) break;
+      size_t lowest = first;
+      for (size_t child = first + 1; child < std::min(first + kArity, size); ++child) {
+        if (heap_[child] < heap_[lowest]) lowest = child;
+      }
+      if (!(heap_[lowest] < entry)) break;
+      place(at, heap_[lowest]);
+      at = lowest;
+    }
+    place(at, entry);
+  }
+
+  std::vector<Entry> heap_;
+  std::vector<size_t> position_;
+};
+
+}  // namespace
+
 void CostToGoField::compute(const std::vector<GoalCell>& goals) {
-  const int width = grid_.width();
-  cost_.create(grid_.height(), width);
+  const int width = grid_.width(), height = grid_.height();
+  cost_.create(height, width);
   cost_.setTo(std::numeric_limits<double>::infinity());
-  parent_.create(grid_.height(), width);
+  parent_.create(height, width);
   parent_.setTo(-1);
-  label_.create(grid_.height(), width);
+  label_.create(height, width);
   label_.setTo(-1);
-  using Entry = std::pair<double, int>;
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open;
+  // The maps are continuous (created whole), so a cell's index addresses each of them.
+  double* const cost = cost_[0];
+  int* const parent = parent_[0];
+  int* const label = label_[0];
+  const uint8_t* const traversable = traversable_[0];
+  const float* const weight = step_weight_[0];
+  OpenCells open(static_cast<size_t>(width) * height);
   for (const GoalCell& goal : goals) {
-    if (!grid_.contains(goal.col, goal.row) || !traversable(goal.col, goal.row)) continue;
-    if (goal.seed_cost >= cost_(goal.row, goal.col)) continue;
-    cost_(goal.row, goal.col) = goal.seed_cost;
-    parent_(goal.row, goal.col) = goal.row * width + goal.col;
-    label_(goal.row, goal.col) = goal.label;
-    open.emplace(goal.seed_cost, goal.row * width + goal.col);
+    if (!grid_.contains(goal.col, goal.row) || !this->traversable(goal.col, goal.row)) continue;
+    const int index = goal.row * width + goal.col;
+    if (goal.seed_cost >= cost[index]) continue;
+    cost[index] = goal.seed_cost;
+    parent[index] = index;
+    label[index] = goal.label;
+    open.lower(index, goal.seed_cost);
   }
   const double resolution = grid_.resolution();
+  const double lengths[2] = {resolution, M_SQRT2 * resolution};
   while (!open.empty()) {
-    const auto [cost, index] = open.top();
-    open.pop();
+    const int index = open.pop();
     const int row = index / width, col = index % width;
-    if (cost > cost_(row, col)) continue;
+    const double here = cost[index];
     for (int dr = -1; dr <= 1; ++dr) {
+      const int r = row + dr;
+      if (r < 0 || r >= height) continue;
       for (int dc = -1; dc <= 1; ++dc) {
-        if (dr == 0 && dc == 0) continue;
-        const int r = row + dr, c = col + dc;
-        if (!grid_.contains(c, r) || !traversable(c, r)) continue;
+        const int c = col + dc;
+        if ((dr == 0 && dc == 0) || c < 0 || c >= width) continue;
+        const int next_index = r * width + c;
+        if (!traversable[next_index]) continue;
+        const bool diagonal = dr != 0 && dc != 0;
         // A diagonal step must not cut the corner of a blocked cell.
-        if (dr != 0 && dc != 0 && (!traversable(col + dc, row) || !traversable(col, row + dr))) continue;
-        const double length = (dr != 0 && dc != 0 ? M_SQRT2 : 1.0) * resolution;
-        const double next = cost + length * 0.5 * (step_weight_(row, col) + step_weight_(r, c));
-        if (next < cost_(r, c)) {
-          cost_(r, c) = next;
-          parent_(r, c) = index;
-          label_(r, c) = label_(row, col);
-          open.emplace(next, r * width + c);
+        if (diagonal && (!traversable[index + dc] || !traversable[index + dr * width])) continue;
+        const double next = here + lengths[diagonal] * 0.5 * (weight[index] + weight[next_index]);
+        if (next < cost[next_index]) {
+          cost[next_index] = next;
+          parent[next_index] = index;
+          label[next_index] = label[index];
+          open.lower(next_index, next);
         }
       }
     }

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 
 #include "test_grids.h"
 
@@ -143,6 +144,83 @@ TEST(CostToGoFieldTest, EveryCellDescendsToTheCheapestGoalAndInheritsItsLabel) {
   EXPECT_EQ(field.label(23, 20), 0);  // x 2.35: 1.8 vs 1.1 + 1
   EXPECT_EQ(field.label(26, 20), 1);  // x 2.65: 2.1 vs 0.8 + 1
   EXPECT_EQ(field.pathFrom(26, 20).back(), cv::Point(34, 20));
+}
+
+TEST(CostToGoFieldTest, MatchesRelaxationToAFixedPointOnAClutteredFloorWithRepulsion) {
+  // A 6 m x 5 m floor with 40 random obstacle blocks, unknown patches and three goals with
+  // different seed costs. The reference knows nothing of queues: it relaxes every step until no
+  // cost falls (Bellman-Ford), with the step cost the class documents.
+  TestGrid cells(60, 50);
+  cells.free(0, 0, 59, 49);
+  std::mt19937 random(7);
+  std::uniform_int_distribution<int> col_of(0, 57), row_of(0, 47), size_of(0, 2);
+  for (int k = 0; k < 40; ++k) {
+    const int col = col_of(random), row = row_of(random);
+    if (k % 4 == 0) {
+      cells.unknown(col, row, col + size_of(random), row + size_of(random));
+    } else {
+      cells.occupied(col, row, col + size_of(random), row + size_of(random));
+    }
+  }
+  const NavigationGrid grid(cells.grid(), {}, NavigationGridOptions{});
+  CostToGoOptions options;
+  options.body_radius_m = 0.2;
+  options.repulsion_distance_m = 0.4;
+  options.repulsion_weight = 4.0;
+  CostToGoField field(grid, options);
+  std::vector<GoalCell> goals;
+  for (const GoalCell goal : {GoalCell{3, 3, 0.0, 0}, GoalCell{55, 44, 0.7, 1}, GoalCell{30, 25, 1.5, 2}}) {
+    if (field.traversable(goal.col, goal.row)) goals.push_back(goal);
+  }
+  ASSERT_GE(goals.size(), 2u);
+  field.compute(goals);
+
+  const double kInf = std::numeric_limits<double>::infinity();
+  const auto weight = [&](int col, int row) {
+    const double s = std::clamp(1.0 - (grid.obstacleDistance(col, row) - options.body_radius_m) / options.repulsion_distance_m,
+                                0.0, 1.0);
+    return 1.0 + options.repulsion_weight * s * s;
+  };
+  std::vector<double> cost(60 * 50, kInf);
+  for (const GoalCell& goal : goals) cost[goal.row * 60 + goal.col] = std::min(cost[goal.row * 60 + goal.col], goal.seed_cost);
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (int row = 0; row < 50; ++row) {
+      for (int col = 0; col < 60; ++col) {
+        if (!field.traversable(col, row) || cost[row * 60 + col] == kInf) continue;
+        for (int dr = -1; dr <= 1; ++dr) {
+          for (int dc = -1; dc <= 1; ++dc) {
+            const int c = col + dc, r = row + dr;
+            if ((dr == 0 && dc == 0) || c < 0 || r < 0 || c >= 60 || r >= 50 || !field.traversable(c, r)) continue;
+            if (dr != 0 && dc != 0 && (!field.traversable(col + dc, row) || !field.traversable(col, row + dr))) continue;
+            const double step = std::hypot(dr, dc) * 0.1 * 0.5 * (weight(col, row) + weight(c, r));
+            if (cost[row * 60 + col] + step < cost[r * 60 + c] - 1e-12) {
+              cost[r * 60 + c] = cost[row * 60 + col] + step;
+              changed = true;
+            }
+          }
+        }
+      }
+    }
+  }
+  int reachable = 0;
+  for (int row = 0; row < 50; ++row) {
+    for (int col = 0; col < 60; ++col) {
+      const double expected = cost[row * 60 + col];
+      ASSERT_EQ(field.reachable(col, row), expected != kInf) << col << ", " << row;
+      if (expected == kInf) continue;
+      ++reachable;
+      EXPECT_NEAR(field.cost(col, row), expected, 1e-6) << col << ", " << row;
+      // The path descends to a goal whose label the cell carries.
+      const std::vector<cv::Point> path = field.pathFrom(col, row);
+      const cv::Point end = path.back();
+      const auto goal = std::find_if(goals.begin(), goals.end(),
+                                     [&](const GoalCell& g) { return g.col == end.x && g.row == end.y; });
+      ASSERT_NE(goal, goals.end());
+      EXPECT_EQ(field.label(col, row), goal->label);
+    }
+  }
+  EXPECT_GT(reachable, 1500);
 }
 
 }  // namespace
