@@ -422,7 +422,8 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
     }
     out.disparity(y, x) = disparity;
     out.best_score(y, x) = static_cast<int>(best_score);
-    out.score_sum(y, x) = sum_scores ? cv::v_reduce_sum(score_sum) : 0;  // a reduction per pixel saved when off
+    // Zero when the quality-of-match test is off (SadMatch), without a reduction per pixel.
+    out.score_sum(y, x) = sum_scores ? cv::v_reduce_sum(score_sum) : 0;
     if (second_best) {
       // The lowest score with the best and its two neighbours (and the padding) masked out;
       // only the chunks holding those neighbours need the mask.
