@@ -5,6 +5,23 @@
 #include <limits>
 
 namespace stereonav {
+namespace {
+
+// Calls `visit` on every cell of `cells` (keyed by lround(coordinate / cell_m)) whose point may lie
+// within `radius` of (x, y), in the map's order; `visit` returns the iterator to go on from, so it
+// may erase. A cell's point lies within half a cell of its key: keys one beyond the square of
+// `radius` hold every point within it.
+template <typename Cells, typename Visit>
+void walkCellsNear(Cells& cells, double cell_m, double x, double y, double radius, const Visit& visit) {
+  const long first_row = std::lround((y - radius) / cell_m) - 1, last_row = std::lround((y + radius) / cell_m) + 1;
+  const long last_col = std::lround((x + radius) / cell_m) + 1;
+  for (long col = std::lround((x - radius) / cell_m) - 1; col <= last_col; ++col) {
+    const auto end = cells.upper_bound({col, last_row});
+    for (auto it = cells.lower_bound({col, first_row}); it != end;) it = visit(it);
+  }
+}
+
+}  // namespace
 
 void NearObstacleMemory::update(const std::vector<mrpt::math::TPoint2D>& sensed, const mrpt::poses::CPose2D& pose,
                                 const std::function<bool(double x, double y)>& confirmed) {
@@ -41,13 +58,8 @@ void NearObstacleMemory::update(const std::vector<mrpt::math::TPoint2D>& sensed,
   };
   // Only points within remember_within_m are judged: the cells around the robot, not the whole
   // memory, which grows with the building.
-  const KeySquare keys = keysNear(pose.x(), pose.y(), options_.remember_within_m);
-  for (long col = keys.first_col; col <= keys.last_col; ++col) {
-    const auto end = cells_.upper_bound({col, keys.last_row});
-    for (auto it = cells_.lower_bound({col, keys.first_row}); it != end;) {
-      it = seenPast(it->second) ? cells_.erase(it) : std::next(it);
-    }
-  }
+  walkCellsNear(cells_, options_.cell_m, pose.x(), pose.y(), options_.remember_within_m,
+                [&](auto it) { return seenPast(it->second) ? cells_.erase(it) : std::next(it); });
 
   for (const mrpt::math::TPoint2D& point : sensed) {
     if (std::hypot(point.x, point.y) > options_.remember_within_m) continue;
@@ -85,22 +97,12 @@ size_t NearObstacleMemory::forgetUnconfirmed(const std::function<bool(double x, 
   return forgotten;
 }
 
-NearObstacleMemory::KeySquare NearObstacleMemory::keysNear(double x, double y, double radius) const {
-  // A cell's point lies within half a cell of the cell's key: keys one beyond the square of
-  // `radius` hold every point within it.
-  return {std::lround((x - radius) / options_.cell_m) - 1, std::lround((x + radius) / options_.cell_m) + 1,
-          std::lround((y - radius) / options_.cell_m) - 1, std::lround((y + radius) / options_.cell_m) + 1};
-}
-
 std::vector<mrpt::math::TPoint2D> NearObstacleMemory::pointsNear(double x, double y, double radius) const {
   std::vector<mrpt::math::TPoint2D> points;
-  const KeySquare keys = keysNear(x, y, radius);
-  for (long col = keys.first_col; col <= keys.last_col; ++col) {
-    const auto end = cells_.upper_bound({col, keys.last_row});
-    for (auto it = cells_.lower_bound({col, keys.first_row}); it != end; ++it) {
-      if (it->second.remembered) points.push_back(it->second.point);
-    }
-  }
+  walkCellsNear(cells_, options_.cell_m, x, y, radius, [&](auto it) {
+    if (it->second.remembered) points.push_back(it->second.point);
+    return std::next(it);
+  });
   return points;
 }
 

@@ -66,12 +66,6 @@ class NearObstacleMemory {
     bool remembered = false;
   };
 
-  // The keys of the cells whose points may lie within `radius` of (x, y).
-  struct KeySquare {
-    long first_col, last_col, first_row, last_row;
-  };
-  KeySquare keysNear(double x, double y, double radius) const;
-
   NearObstacleMemoryOptions options_;
   std::map<std::pair<long, long>, Cell> cells_;  // remembered points and candidates
 };
