@@ -192,18 +192,19 @@ void AlbedoSampler::sample(const std::vector<AlbedoQuery>& queries, std::vector<
         octave_seeds_[octave] = texture.seed + 1013u * static_cast<uint32_t>(octave);
       }
     }
-    growPoints(count + octaves);
+    if (x_.size() < count + octaves + kNoiseLanes) growPoints(count + octaves);
     const double inverse_footprint =
         query.footprint_m > 0.0 ? 1.0 / query.footprint_m : std::numeric_limits<double>::infinity();
     const double u = query.u + query.noise_shift;
     for (size_t octave = 0; octave < octaves; ++octave) {
+      // Written whatever the weight and kept only if it is not zero: which octaves a pixel's
+      // footprint keeps changes from pixel to pixel, too often for a branch to guess.
       const double weight = octaveWeight(texture.scales_m[octave], inverse_footprint);
-      if (weight == 0.0) continue;
       x_[count] = u * inverse_wavelengths_[octave];
       y_[count] = query.v * inverse_wavelengths_[octave];
       seed_[count] = octave_seeds_[octave];
       weight_[count] = weight;
-      ++count;
+      count += weight != 0.0;
     }
     noisy_.push_back(i);
     points_end_.push_back(count);
@@ -215,12 +216,18 @@ void AlbedoSampler::sample(const std::vector<AlbedoQuery>& queries, std::vector<
   valueNoise(x_.data(), y_.data(), seed_.data(), noise_.data(), count);
 
   size_t point = 0;
+  const SurfaceTexture* rooted_texture = nullptr;  // the texture whose octave count's root is kept
+  double octave_count_root = 1.0;
   for (size_t j = 0; j < noisy_.size(); ++j) {
     double sum = 0.0;
     for (; point < points_end_[j]; ++point) sum += weight_[point] * noise_[point];
     const SurfaceTexture& texture = *queries[noisy_[j]].texture;
+    if (&texture != rooted_texture) {
+      rooted_texture = &texture;
+      octave_count_root = std::sqrt(static_cast<double>(texture.scales_m.size()));
+    }
     // Interpolated value noise has a standard deviation near 1/3 per octave.
-    const double signal = sum * 3.0 / std::sqrt(static_cast<double>(texture.scales_m.size()));
+    const double signal = sum * 3.0 / octave_count_root;
     albedos[noisy_[j]] = albedoOfSignal(texture, signal);
   }
 }
