@@ -43,11 +43,15 @@ using Words = uint32_t __attribute__((vector_size(4 * kNoiseLanes)));
   return reinterpret_cast<const Ints&>(low);
 }
 
+// std::clamp(value, low, high), NaN included, as a maximum and a minimum without branches: the
+// branches of std::clamp went the wrong way for many of a row's pixels.
+double clampBetween(double value, double low, double high) { return std::min(std::max(value, low), high); }
+
 // How much of an octave of wavelength `wavelength` survives a pixel footprint: all of it above
 // four pixels per wavelength, none below two (where it could only alias). Written with the
 // footprint's inverse: the division is done once per pixel, not once per octave.
 double octaveWeight(double wavelength, double inverse_footprint) {
-  return std::clamp((wavelength * inverse_footprint - 2.0) / 2.0, 0.0, 1.0);
+  return clampBetween((wavelength * inverse_footprint - 2.0) / 2.0, 0.0, 1.0);
 }
 
 // Second integral of the unit square wave (1 on the first `duty` of each period) from 0 to s,
@@ -86,7 +90,7 @@ double stripes(const SurfaceTexture& texture, double u, double v, double footpri
 
 // A texture's albedo for a signal in [-1, 1] (noise or stripes) around its mean.
 double albedoOfSignal(const SurfaceTexture& texture, double signal) {
-  return std::clamp(texture.mean + texture.contrast * signal, 0.0, 1.0);
+  return clampBetween(texture.mean + texture.contrast * signal, 0.0, 1.0);
 }
 
 }  // namespace
