@@ -46,29 +46,39 @@ ViewCorners viewCorners(const Solid& solid, const ViewAxes& view) {
 constexpr std::array<std::array<int, 2>, 12> kEdges{{{0, 1}, {2, 3}, {4, 5}, {6, 7}, {0, 2}, {1, 3},
                                                      {4, 6}, {5, 7}, {0, 4}, {1, 5}, {2, 6}, {3, 7}}};
 
+// intersectHorizontalPlane for the rays of a row of pixels, whose directions rise by `step_z` from
+// `row_z` pixel by pixel: as a vector loop, the planes being met by every ray of the image.
+__attribute__((target_clones("avx2", "default")))
+void planeHits(double height, double origin_z, double row_z, double step_z, int width, double* t) {
+  const double rise = height - origin_z;
+  for (int x = 0; x < width; ++x) {
+    // A ray parallel to the plane divides by zero: infinite or NaN, no hit.
+    const double hit = rise / (row_z + x * step_z);
+    t[x] = hit > kMinimumHitT && hit < kNoHit ? hit : kNoHit;
+  }
+}
+
 }  // namespace
 
 RayCaster::RayCaster(const World& world) : world_(world) {}
 
 void RayCaster::cast(const PixelRays& rays) {
   rays_ = rays;
-  hits_.assign(static_cast<size_t>(rays.width) * rays.height, PixelHit{kNoHit, kNothing, 0});
+  hits_.resize(static_cast<size_t>(rays.width) * rays.height);
   const bool above_floor = rays.origin.z() > 0.0;
   const bool below_ceiling = world_.ceiling_height > 0.0 && rays.origin.z() < world_.ceiling_height;
-  Ray ray{rays.origin, Eigen::Vector3d::Zero()};
+  floor_t_.assign(rays.width, kNoHit);
+  ceiling_t_.assign(rays.width, kNoHit);
   for (int y = 0; y < rays.height; ++y) {
     const Eigen::Vector3d row_start = rays.rowStart(y);
+    if (above_floor) planeHits(0.0, rays.origin.z(), row_start.z(), rays.right.z(), rays.width, floor_t_.data());
+    if (below_ceiling) {
+      planeHits(world_.ceiling_height, rays.origin.z(), row_start.z(), rays.right.z(), rays.width, ceiling_t_.data());
+    }
     PixelHit* row = &hits_[static_cast<size_t>(y) * rays.width];
     for (int x = 0; x < rays.width; ++x) {
-      ray.direction = row_start + x * rays.right;
-      if (above_floor) {
-        const double t = intersectHorizontalPlane(0.0, ray, row[x].t);
-        if (t < row[x].t) row[x] = {t, kFloor, 0};
-      }
-      if (below_ceiling) {
-        const double t = intersectHorizontalPlane(world_.ceiling_height, ray, row[x].t);
-        if (t < row[x].t) row[x] = {t, kCeiling, 0};
-      }
+      row[x] = {floor_t_[x], floor_t_[x] < kNoHit ? kFloor : kNothing, 0};
+      if (ceiling_t_[x] < row[x].t) row[x] = {ceiling_t_[x], kCeiling, 0};
     }
   }
 

@@ -78,6 +78,8 @@ class RayCaster {
   std::vector<Solid> moving_;
   PixelRays rays_;
   std::vector<PixelHit> hits_;
+  // A row's hits on the floor and on the ceiling (kNoHit where there is none or no such plane).
+  std::vector<double> floor_t_, ceiling_t_;
   // The silhouette being drawn: the x range to test on each row, and the rows it reaches.
   std::vector<double> span_begin_;
   std::vector<double> span_end_;
