@@ -196,7 +196,7 @@ void AlbedoSampler::sample(const std::vector<AlbedoQuery>& queries, std::vector<
         octave_seeds_[octave] = texture.seed + 1013u * static_cast<uint32_t>(octave);
       }
     }
-    if (x_.size() < count + octaves + kNoiseLanes) growPoints(count + octaves);
+    growPoints(count + octaves);
     const double inverse_footprint =
         query.footprint_m > 0.0 ? 1.0 / query.footprint_m : std::numeric_limits<double>::infinity();
     const double u = query.u + query.noise_shift;
@@ -220,18 +220,12 @@ void AlbedoSampler::sample(const std::vector<AlbedoQuery>& queries, std::vector<
   valueNoise(x_.data(), y_.data(), seed_.data(), noise_.data(), count);
 
   size_t point = 0;
-  const SurfaceTexture* rooted_texture = nullptr;  // the texture whose octave count's root is kept
-  double octave_count_root = 1.0;
   for (size_t j = 0; j < noisy_.size(); ++j) {
     double sum = 0.0;
     for (; point < points_end_[j]; ++point) sum += weight_[point] * noise_[point];
     const SurfaceTexture& texture = *queries[noisy_[j]].texture;
-    if (&texture != rooted_texture) {
-      rooted_texture = &texture;
-      octave_count_root = std::sqrt(static_cast<double>(texture.scales_m.size()));
-    }
     // Interpolated value noise has a standard deviation near 1/3 per octave.
-    const double signal = sum * 3.0 / octave_count_root;
+    const double signal = sum * 3.0 / std::sqrt(static_cast<double>(texture.scales_m.size()));
     albedos[noisy_[j]] = albedoOfSignal(texture, signal);
   }
 }
