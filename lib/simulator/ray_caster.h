@@ -71,6 +71,9 @@ class RayCaster {
   // Tests solid `index` on the pixels its silhouette covers whose hits are farther than
   // `nearest_t`; `corners`: its bounding prism's corners in view coordinates (ray_caster.cc).
   void drawSolid(int index, double nearest_t, const std::array<Eigen::Vector3d, 8>& corners);
+  // drawSolid's tests of a box on the pixels begin..end of a row.
+  void drawBoxOnRow(const Solid& box, int index, double nearest_t, const Eigen::Vector3d& row_start, int begin,
+                    int end, PixelHit* row);
   // Widens the row spans of the silhouette being drawn by the segment a-b (pixel coordinates).
   void addSegment(const Eigen::Vector2d& a, const Eigen::Vector2d& b);
 
