@@ -26,6 +26,9 @@ bool clipSlab(double origin, double direction, double low, double high, int entr
   return *t_near <= *t_far;
 }
 
+// The reference for RayCaster::drawBoxOnRow (ray_caster.cc), which runs these same operations in
+// the same order on four rays at once: a change here must be made there too, or the caster's
+// tests against testing every solid for every pixel fail.
 double intersectBox(const Solid& box, const Ray& ray, double t_max, int* face) {
   // Into the box frame: rotate by -yaw about the box centre.
   const double px = ray.origin.x() - box.x;
