@@ -43,6 +43,8 @@ FrontierExplorer::FrontierExplorer(const ExplorerOptions& options)
   grid_options_.max_hole_cells = options.max_hole_cells;
   grid_options_.precise_min_disparity = static_cast<float>(options.precise_min_disparity);
   grid_options_.sure_obstacle_g = options.obstacle_memory_min_g;
+  // The planner's and the controller's repulsion both end this far from an obstacle.
+  grid_options_.distance_horizon_m = options.robot_radius_m + options.safety_margin_m + options.repulsion_distance_m;
   status_.phase = options.initial_look_around ? ExplorerPhase::kLookingAround : ExplorerPhase::kTurning;
 }
 

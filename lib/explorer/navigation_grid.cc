@@ -2,25 +2,23 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace stereonav {
 namespace {
 
-// Metres from each cell centre to the near edge of the nearest cell where `is_clear` is 0; the
-// grid's border counts as not clear, so nothing plans off the map.
-cv::Mat1f distanceToBlocked(const cv::Mat1b& is_clear, double resolution) {
+// Metres from each cell centre in `window` to the near edge of the nearest cell where `is_clear`
+// is 0, 0 outside the window. The cells around the window count as not clear, as does the grid's
+// border, so nothing plans off the map.
+cv::Mat1f distanceToBlocked(const cv::Mat1b& is_clear, const cv::Rect& window, double resolution) {
   cv::Mat1f cells(is_clear.size(), 0.0f);
-  // Only over the clear cells' bounding box, with a blocked ring around it: the nearest blocked
-  // cell of a cell inside is on the ring or nearer. The free floor is often a small part of a
-  // map that far readings have stretched.
-  const cv::Rect clear = cv::boundingRect(is_clear);
-  if (!clear.empty()) {
+  if (!window.empty()) {
     cv::Mat1b padded;
-    cv::copyMakeBorder(is_clear(clear), padded, 1, 1, 1, 1, cv::BORDER_CONSTANT, cv::Scalar(0));
+    cv::copyMakeBorder(is_clear(window), padded, 1, 1, 1, 1, cv::BORDER_CONSTANT, cv::Scalar(0));
     cv::Mat1f distances;
     cv::distanceTransform(padded, distances, cv::DIST_L2, cv::DIST_MASK_PRECISE);
-    distances(cv::Rect(1, 1, clear.width, clear.height)).copyTo(cells(clear));
+    distances(cv::Rect(1, 1, window.width, window.height)).copyTo(cells(window));
   }
   cv::Mat1f metres = (cells - 0.5f) * static_cast<float>(resolution);
   return metres;
@@ -31,7 +29,10 @@ cv::Mat1f distanceToBlocked(const cv::Mat1b& is_clear, double resolution) {
 NavigationGrid::NavigationGrid(const DisparityTaggedGrid& grid, const std::vector<mrpt::poses::CPose2D>& visited,
                                const NavigationGridOptions& options, const std::vector<cv::Point2d>& contacts,
                                const std::vector<cv::Point2d>& seen_free)
-    : frame_(grid.frame()), cell_class_(grid.height(), grid.width()), sure_obstacle_(grid.height(), grid.width()) {
+    : frame_(grid.frame()),
+      distance_horizon_m_(options.distance_horizon_m),
+      cell_class_(grid.height(), grid.width()),
+      sure_obstacle_(grid.height(), grid.width()) {
   const OccupancyScale& scale = grid.scale();
   for (int row = 0; row < grid.height(); ++row) {
     const uint8_t* g = grid.occupancyRow(row);
@@ -82,8 +83,21 @@ void NavigationGrid::freeSpecks(int max_cells) {
 }
 
 void NavigationGrid::computeDistances() {
-  clearance_m_ = distanceToBlocked(cell_class_ == kFree, frame_.resolution);
-  obstacle_distance_m_ = distanceToBlocked(cell_class_ < kImprecise, frame_.resolution);
+  // Only over the free cells' bounding box, whose blocked ring is no nearer than a cell's nearest
+  // blocked cell: the free floor is often a small part of a map that far readings have stretched.
+  const cv::Mat1b is_free = cell_class_ == kFree;
+  const cv::Rect free_box = cv::boundingRect(is_free);
+  clearance_m_ = distanceToBlocked(is_free, free_box, frame_.resolution);
+  // Obstacle distances are wanted at free cells and up to the horizon only, so the box grows by
+  // the horizon: a nearer obstacle lies inside it, and its ring is farther than the horizon.
+  const cv::Rect grid_box(0, 0, width(), height());
+  const int reach = std::isfinite(distance_horizon_m_)
+                        ? static_cast<int>(std::ceil(distance_horizon_m_ / frame_.resolution))
+                        : std::max(width(), height());
+  const cv::Rect near_free =
+      free_box.empty() ? cv::Rect() : cv::Rect(free_box.x - reach, free_box.y - reach, free_box.width + 2 * reach,
+                                               free_box.height + 2 * reach) & grid_box;
+  obstacle_distance_m_ = distanceToBlocked(cell_class_ < kImprecise, near_free, frame_.resolution);
 }
 
 void NavigationGrid::freeIslands(const cv::Mat1b& is_island, int connectivity, int max_cells) {

@@ -4,6 +4,7 @@
 
 #include <opencv2/core.hpp>
 
+#include <limits>
 #include <vector>
 
 #include "occupancy_grid/disparity_tagged_grid.h"
@@ -27,6 +28,10 @@ struct NavigationGridOptions {
   // Occupancy values G at or above this hold obstacle evidence from several readings (each adds
   // K, paper section 3.4): mapHoldsObstacle.
   int sure_obstacle_g = 200;
+  // obstacleDistance is exact at free cells up to this distance (metres) and at least this
+  // beyond it: nothing that reads it looks farther, and the obstacle distance transform then
+  // covers the free floor's surroundings instead of the whole map.
+  double distance_horizon_m = std::numeric_limits<double>::infinity();
 };
 
 // The stereo grid as the planner sees it: each cell free, unknown, occupied only by imprecise
@@ -70,7 +75,9 @@ class NavigationGrid {
   // Distance from the cell's centre to the nearest cell that is not free (or to the grid's edge),
   // counted to that cell's near edge: a disc of this radius at the centre overlaps free cells only.
   float clearance(int col, int row) const { return clearance_m_(row, col); }
-  // The same to the nearest occupied or imprecise cell only (the potential field's repulsion).
+  // The same to the nearest occupied or imprecise cell only (the potential field's repulsion). At
+  // free cells it is exact up to the options' distance_horizon_m and at least that beyond; at
+  // occupied and imprecise cells it is -half a cell.
   float obstacleDistance(int col, int row) const { return obstacle_distance_m_(row, col); }
 
  private:
@@ -80,6 +87,7 @@ class NavigationGrid {
   void computeDistances();
 
   GridFrame frame_;
+  double distance_horizon_m_;
   cv::Mat1b cell_class_;
   cv::Mat1b sure_obstacle_;
   cv::Mat1f clearance_m_;
