@@ -14,39 +14,41 @@ namespace {
 // region of unresolved cells each of which has a resolved cell among its 8 neighbours (none is
 // farther than 1.5 cells from one), touching a precise obstacle.
 //
-// Per cell: the label of the unresolved region of an opening it is in, 0 otherwise (resolved, or
-// in a seam); `areas` gets each label's cell count.
-cv::Mat1i openingRegions(const NavigationGrid& grid, std::vector<int>& areas) {
-  const cv::Mat1b& classes = grid.cellClasses();
-  const cv::Mat1b unresolved = (classes == NavigationGrid::kUnknown) | (classes == NavigationGrid::kImprecise);
+// The unresolved regions (8-connected labels, 0 on resolved cells) and, per label, its cell count
+// and whether it is an opening rather than a seam.
+struct OpeningRegions {
   cv::Mat1i labels;
-  cv::Mat stats, centroids;
-  const int count = cv::connectedComponentsWithStats(unresolved, labels, stats, centroids, 8, CV_32S);
-  areas.assign(static_cast<size_t>(count), 0);
-  for (int label = 1; label < count; ++label) areas[label] = stats.at<int>(label, cv::CC_STAT_AREA);
+  std::vector<int> areas;
+  std::vector<uint8_t> is_opening;
+};
+
+OpeningRegions openingRegions(const NavigationGrid& grid) {
+  const cv::Mat1b& classes = grid.cellClasses();
+  cv::Mat1b unresolved;
+  cv::inRange(classes, NavigationGrid::kUnknown, NavigationGrid::kImprecise, unresolved);
+  OpeningRegions regions;
+  const int count = cv::connectedComponents(unresolved, regions.labels, 8, CV_32S);
   // The cells with no resolved 8-neighbour (the grid's edge does not count as resolved), and
   // those with a precise obstacle among their 8 neighbours (nothing beyond the edge).
   cv::Mat1b interior, beside_obstacle;
   cv::erode(unresolved, interior, cv::Mat());
   cv::dilate(classes == NavigationGrid::kOccupied, beside_obstacle, cv::Mat());
+  regions.areas.assign(static_cast<size_t>(count), 0);
   std::vector<uint8_t> thin(static_cast<size_t>(count), 1), touches_obstacle(static_cast<size_t>(count), 0);
   for (int row = 0; row < classes.rows; ++row) {
-    const int* label_row = labels[row];
+    const int* label_row = regions.labels[row];
     const uint8_t* interior_row = interior[row];
     const uint8_t* beside_row = beside_obstacle[row];
     for (int col = 0; col < classes.cols; ++col) {
       const int label = label_row[col];
+      ++regions.areas[label];
       if (interior_row[col]) thin[label] = 0;
       if (beside_row[col]) touches_obstacle[label] = 1;
     }
   }
-  for (int row = 0; row < classes.rows; ++row) {
-    for (int col = 0; col < classes.cols; ++col) {
-      const int label = labels(row, col);
-      if (label != 0 && thin[label] && touches_obstacle[label]) labels(row, col) = 0;
-    }
-  }
-  return labels;
+  regions.is_opening.assign(static_cast<size_t>(count), 0);
+  for (int label = 1; label < count; ++label) regions.is_opening[label] = !(thin[label] && touches_obstacle[label]);
+  return regions;
 }
 
 // What a free cell borders through its 4-neighbours: the largest area (cells) of the opening
@@ -57,15 +59,16 @@ struct OpeningBorder {
   bool unknown = false;
 };
 
-OpeningBorder openingBorder(const NavigationGrid& grid, const cv::Mat1i& regions, const std::vector<int>& areas,
-                            int col, int row) {
+OpeningBorder openingBorder(const NavigationGrid& grid, const OpeningRegions& regions, int col, int row) {
   OpeningBorder border;
   if (grid.cellClass(col, row) != NavigationGrid::kFree) return border;
   static const int kNeighbours[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
   for (const auto& offset : kNeighbours) {
     const int c = col + offset[0], r = row + offset[1];
-    if (!grid.contains(c, r) || regions(r, c) == 0) continue;
-    border.area = std::max(border.area, areas[static_cast<size_t>(regions(r, c))]);
+    if (!grid.contains(c, r)) continue;
+    const auto label = static_cast<size_t>(regions.labels(r, c));
+    if (!regions.is_opening[label]) continue;
+    border.area = std::max(border.area, regions.areas[label]);
     border.unknown = border.unknown || grid.cellClass(c, r) == NavigationGrid::kUnknown;
   }
   return border;
@@ -74,16 +77,15 @@ OpeningBorder openingBorder(const NavigationGrid& grid, const cv::Mat1i& regions
 }  // namespace
 
 std::vector<Frontier> findFrontiers(const NavigationGrid& grid, int min_cells) {
-  std::vector<int> areas;
-  const cv::Mat1i regions = openingRegions(grid, areas);
+  const OpeningRegions regions = openingRegions(grid);
   // Per cell: the area it borders (0 if it is no frontier cell) and whether it faces unknown.
-  // Only free cells border anything.
-  cv::Mat1i bordered(grid.height(), grid.width(), 0);
-  cv::Mat1b faces_unknown(grid.height(), grid.width(), uint8_t{0});
+  // Only free cells border anything, so only their bounding box is visited.
   const cv::Rect free_cells = cv::boundingRect(grid.cellClasses() == NavigationGrid::kFree);
-  for (int row = free_cells.y; row < free_cells.y + free_cells.height; ++row) {
-    for (int col = free_cells.x; col < free_cells.x + free_cells.width; ++col) {
-      const OpeningBorder border = openingBorder(grid, regions, areas, col, row);
+  cv::Mat1i bordered(free_cells.size(), 0);
+  cv::Mat1b faces_unknown(free_cells.size(), uint8_t{0});
+  for (int row = 0; row < free_cells.height; ++row) {
+    for (int col = 0; col < free_cells.width; ++col) {
+      const OpeningBorder border = openingBorder(grid, regions, free_cells.x + col, free_cells.y + row);
       bordered(row, col) = border.area;
       faces_unknown(row, col) = border.unknown;
     }
@@ -91,9 +93,9 @@ std::vector<Frontier> findFrontiers(const NavigationGrid& grid, int min_cells) {
   cv::Mat1b is_frontier = bordered > 0;
   const double cell_area = grid.resolution() * grid.resolution();
   std::vector<Frontier> frontiers;
-  std::vector<cv::Point> stack;
-  for (int row = 0; row < grid.height(); ++row) {
-    for (int col = 0; col < grid.width(); ++col) {
+  std::vector<cv::Point> stack;  // cells in the box's coordinates
+  for (int row = 0; row < is_frontier.rows; ++row) {
+    for (int col = 0; col < is_frontier.cols; ++col) {
       if (!is_frontier(row, col)) continue;
       Frontier frontier;
       is_frontier(row, col) = 0;
@@ -101,13 +103,13 @@ std::vector<Frontier> findFrontiers(const NavigationGrid& grid, int min_cells) {
       while (!stack.empty()) {
         const cv::Point cell = stack.back();
         stack.pop_back();
-        frontier.cells.push_back(cell);
+        frontier.cells.push_back(cell + free_cells.tl());
         frontier.unseen_area_m2 = std::max(frontier.unseen_area_m2, bordered(cell.y, cell.x) * cell_area);
         frontier.borders_unknown = frontier.borders_unknown || faces_unknown(cell.y, cell.x);
         for (int dr = -1; dr <= 1; ++dr) {
           for (int dc = -1; dc <= 1; ++dc) {
             const int c = cell.x + dc, r = cell.y + dr;
-            if (grid.contains(c, r) && is_frontier(r, c)) {
+            if (c >= 0 && r >= 0 && c < is_frontier.cols && r < is_frontier.rows && is_frontier(r, c)) {
               is_frontier(r, c) = 0;
               stack.emplace_back(c, r);
             }

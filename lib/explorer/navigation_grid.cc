@@ -107,10 +107,14 @@ void NavigationGrid::freeIslands(const cv::Mat1b& is_island, int connectivity, i
   const cv::Rect box = cv::boundingRect(cell_class_ == kFree);
   if (box.empty()) return;
   cv::Mat1i labels;
-  cv::Mat stats, centroids;
-  const int count = cv::connectedComponentsWithStats(is_island(box), labels, stats, centroids, connectivity, CV_32S);
+  const int count = cv::connectedComponents(is_island(box), labels, connectivity, CV_32S);
+  std::vector<int> areas(static_cast<size_t>(count), 0);
+  for (int row = 0; row < box.height; ++row) {
+    const int* label_row = labels[row];
+    for (int col = 0; col < box.width; ++col) ++areas[label_row[col]];
+  }
   std::vector<uint8_t> frees(static_cast<size_t>(count), 0);
-  for (int label = 1; label < count; ++label) frees[label] = stats.at<int>(label, cv::CC_STAT_AREA) <= max_cells;
+  for (int label = 1; label < count; ++label) frees[label] = areas[label] <= max_cells;
   static const int kNeighbours[8][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}, {1, 1}, {1, -1}, {-1, 1}, {-1, -1}};
   cv::Mat1b classes = cell_class_(box);  // a view: the islands are freed through it
   for (int row = 0; row < box.height; ++row) {
