@@ -10,8 +10,10 @@ CostToGoField::CostToGoField(const NavigationGrid& grid, const CostToGoOptions& 
     : grid_(grid),
       traversable_(grid.height(), grid.width(), uint8_t{0}),
       step_weight_(grid.height(), grid.width(), 1.0f) {
-  for (int row = 0; row < grid.height(); ++row) {
-    for (int col = 0; col < grid.width(); ++col) {
+  // Only free cells have room for the body.
+  const cv::Rect& free_cells = grid.freeCells();
+  for (int row = free_cells.y; row < free_cells.y + free_cells.height; ++row) {
+    for (int col = free_cells.x; col < free_cells.x + free_cells.width; ++col) {
       traversable_(row, col) = grid.clearance(col, row) >= options.body_radius_m ? 1 : 0;
       // Steps are taken between traversable cells only.
       if (!traversable_(row, col) || options.repulsion_distance_m <= 0.0) continue;

@@ -80,7 +80,7 @@ std::vector<Frontier> findFrontiers(const NavigationGrid& grid, int min_cells) {
   const OpeningRegions regions = openingRegions(grid);
   // Per cell: the area it borders (0 if it is no frontier cell) and whether it faces unknown.
   // Only free cells border anything, so only their bounding box is visited.
-  const cv::Rect free_cells = cv::boundingRect(grid.cellClasses() == NavigationGrid::kFree);
+  const cv::Rect& free_cells = grid.freeCells();
   cv::Mat1i bordered(free_cells.size(), 0);
   cv::Mat1b faces_unknown(free_cells.size(), uint8_t{0});
   for (int row = 0; row < free_cells.height; ++row) {

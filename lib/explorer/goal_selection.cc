@@ -41,9 +41,11 @@ std::vector<GoalCell> GoalSelection::goals(const NavigationGrid& grid, const Cos
   // Looking from afar, a step nearer the frontier is worth more than any step of path costs
   // (at most 1 + repulsion_weight per metre): the nearest place the body reaches wins.
   const double distance_cost = look_from_m > 0.0 ? 2.0 * (1.0 + options_.repulsion_weight) : 0.0;
-  // Per cell the cheapest seed and its frontier: goals of overlapping frontiers are not repeated.
-  cv::Mat1d seed(grid.height(), grid.width(), std::numeric_limits<double>::infinity());
-  cv::Mat1i label(grid.height(), grid.width(), -1);
+  // Per traversable cell (inside the free cells' box, as `box` holds them) the cheapest seed and
+  // its frontier: goals of overlapping frontiers are not repeated.
+  const cv::Rect& box = grid.freeCells();
+  cv::Mat1d seed(box.size(), std::numeric_limits<double>::infinity());
+  cv::Mat1i label(box.size(), -1);
   for (size_t i = 0; i < frontiers.size(); ++i) {
     const bool waits = frontiers[i].unseen_area_m2 < options_.pocket_area_m2 || !frontiers[i].borders_unknown;
     const double seed_cost = (isTarget(grid, frontiers[i], goal_radius, memory) ? 0.0 : options_.target_switch_penalty_m) +
@@ -54,18 +56,18 @@ std::vector<GoalCell> GoalSelection::goals(const NavigationGrid& grid, const Cos
           const int c = cell.x + dc, r = cell.y + dr;
           if (dc * dc + dr * dr > reach_sq || !grid.contains(c, r) || !field.traversable(c, r)) continue;
           const double cost = seed_cost + std::hypot(dc, dr) * grid.resolution() * distance_cost;
-          if (cost < seed(r, c)) {
-            seed(r, c) = cost;
-            label(r, c) = static_cast<int>(i);
+          if (cost < seed(r - box.y, c - box.x)) {
+            seed(r - box.y, c - box.x) = cost;
+            label(r - box.y, c - box.x) = static_cast<int>(i);
           }
         }
       }
     }
   }
   std::vector<GoalCell> goals;
-  for (int row = 0; row < grid.height(); ++row) {
-    for (int col = 0; col < grid.width(); ++col) {
-      if (label(row, col) >= 0) goals.push_back({col, row, seed(row, col), label(row, col)});
+  for (int row = 0; row < box.height; ++row) {
+    for (int col = 0; col < box.width; ++col) {
+      if (label(row, col) >= 0) goals.push_back({box.x + col, box.y + row, seed(row, col), label(row, col)});
     }
   }
   return goals;

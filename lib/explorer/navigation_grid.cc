@@ -8,14 +8,15 @@
 namespace stereonav {
 namespace {
 
-// Metres from each cell centre in `window` to the near edge of the nearest cell where `is_clear`
-// is 0, 0 outside the window. The cells around the window count as not clear, as does the grid's
-// border, so nothing plans off the map.
-cv::Mat1f distanceToBlocked(const cv::Mat1b& is_clear, const cv::Rect& window, double resolution) {
-  cv::Mat1f cells(is_clear.size(), 0.0f);
+// Metres from each cell centre in `window` to the near edge of the nearest cell whose class is
+// not below `clear_below`, 0 outside the window. The cells around the window count as blocked,
+// as does the grid's border, so nothing plans off the map.
+cv::Mat1f distanceToBlocked(const cv::Mat1b& classes, uint8_t clear_below, const cv::Rect& window,
+                            double resolution) {
+  cv::Mat1f cells(classes.size(), 0.0f);
   if (!window.empty()) {
     cv::Mat1b padded;
-    cv::copyMakeBorder(is_clear(window), padded, 1, 1, 1, 1, cv::BORDER_CONSTANT, cv::Scalar(0));
+    cv::copyMakeBorder(classes(window) < clear_below, padded, 1, 1, 1, 1, cv::BORDER_CONSTANT, cv::Scalar(0));
     cv::Mat1f distances;
     cv::distanceTransform(padded, distances, cv::DIST_L2, cv::DIST_MASK_PRECISE);
     distances(cv::Rect(1, 1, window.width, window.height)).copyTo(cells(window));
@@ -73,41 +74,43 @@ NavigationGrid::NavigationGrid(const DisparityTaggedGrid& grid, const std::vecto
     int col = 0, row = 0;
     if (cellAt(contact.x, contact.y, col, row)) cell_class_(row, col) = kOccupied;
   }
-  if (options.max_hole_cells > 0) freeIslands(cell_class_ == kUnknown, 4, options.max_hole_cells);
+  free_cells_ = cv::boundingRect(cell_class_ == kFree);
+  if (options.max_hole_cells > 0) freeIslands(kUnknown, kUnknown, 4, options.max_hole_cells);
   computeDistances();
 }
 
 void NavigationGrid::freeSpecks(int max_cells) {
-  freeIslands(cell_class_ >= kImprecise, 8, max_cells);
+  freeIslands(kImprecise, kOccupied, 8, max_cells);
   computeDistances();
 }
 
 void NavigationGrid::computeDistances() {
   // Only over the free cells' bounding box, whose blocked ring is no nearer than a cell's nearest
   // blocked cell: the free floor is often a small part of a map that far readings have stretched.
-  const cv::Mat1b is_free = cell_class_ == kFree;
-  const cv::Rect free_box = cv::boundingRect(is_free);
-  clearance_m_ = distanceToBlocked(is_free, free_box, frame_.resolution);
+  clearance_m_ = distanceToBlocked(cell_class_, kUnknown, free_cells_, frame_.resolution);
   // Obstacle distances are wanted at free cells and up to the horizon only, so the box grows by
   // the horizon: a nearer obstacle lies inside it, and its ring is farther than the horizon.
   const cv::Rect grid_box(0, 0, width(), height());
   const int reach = std::isfinite(distance_horizon_m_)
                         ? static_cast<int>(std::ceil(distance_horizon_m_ / frame_.resolution))
                         : std::max(width(), height());
-  const cv::Rect near_free =
-      free_box.empty() ? cv::Rect() : cv::Rect(free_box.x - reach, free_box.y - reach, free_box.width + 2 * reach,
-                                               free_box.height + 2 * reach) & grid_box;
-  obstacle_distance_m_ = distanceToBlocked(cell_class_ < kImprecise, near_free, frame_.resolution);
+  const cv::Rect near_free = free_cells_.empty() ? cv::Rect()
+                                                : cv::Rect(free_cells_.x - reach, free_cells_.y - reach,
+                                                           free_cells_.width + 2 * reach, free_cells_.height + 2 * reach) &
+                                                      grid_box;
+  obstacle_distance_m_ = distanceToBlocked(cell_class_, kImprecise, near_free, frame_.resolution);
 }
 
-void NavigationGrid::freeIslands(const cv::Mat1b& is_island, int connectivity, int max_cells) {
+void NavigationGrid::freeIslands(uint8_t lowest_class, uint8_t highest_class, int connectivity, int max_cells) {
   // An island borders free cells only, so it lies inside the free cells' bounding box, and a
   // region that reaches the box's edge is none (its neighbour beyond is not free): only the box
-  // is labelled.
-  const cv::Rect box = cv::boundingRect(cell_class_ == kFree);
+  // is labelled, and freeing islands leaves the box as it was.
+  const cv::Rect& box = free_cells_;
   if (box.empty()) return;
+  cv::Mat1b is_island;
+  cv::inRange(cell_class_(box), lowest_class, highest_class, is_island);
   cv::Mat1i labels;
-  const int count = cv::connectedComponents(is_island(box), labels, connectivity, CV_32S);
+  const int count = cv::connectedComponents(is_island, labels, connectivity, CV_32S);
   std::vector<int> areas(static_cast<size_t>(count), 0);
   for (int row = 0; row < box.height; ++row) {
     const int* label_row = labels[row];

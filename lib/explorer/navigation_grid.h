@@ -72,6 +72,9 @@ class NavigationGrid {
   // least sure_obstacle_g (the `contacts` the planner adds do not count).
   bool mapHoldsObstacle(double x, double y) const;
   const cv::Mat1b& cellClasses() const { return cell_class_; }
+  // The free cells' bounding box: no cell outside it is free, so whatever only free cells have
+  // (frontiers, clearance, traversability) is looked for inside it.
+  const cv::Rect& freeCells() const { return free_cells_; }
   // Distance from the cell's centre to the nearest cell that is not free (or to the grid's edge),
   // counted to that cell's near edge: a disc of this radius at the centre overlaps free cells only.
   float clearance(int col, int row) const { return clearance_m_(row, col); }
@@ -81,15 +84,17 @@ class NavigationGrid {
   float obstacleDistance(int col, int row) const { return obstacle_distance_m_(row, col); }
 
  private:
-  // Islands of `is_island` cells (`connectivity` 4 or 8) of at most `max_cells` cells, bordered
-  // by free cells only (not by other cells or the grid's edge), become free.
-  void freeIslands(const cv::Mat1b& is_island, int connectivity, int max_cells);
+  // Islands of cells whose class is from `lowest_class` to `highest_class` (`connectivity` 4 or
+  // 8) of at most `max_cells` cells, bordered by free cells only (not by other cells or the
+  // grid's edge), become free.
+  void freeIslands(uint8_t lowest_class, uint8_t highest_class, int connectivity, int max_cells);
   void computeDistances();
 
   GridFrame frame_;
   double distance_horizon_m_;
   cv::Mat1b cell_class_;
   cv::Mat1b sure_obstacle_;
+  cv::Rect free_cells_;
   cv::Mat1f clearance_m_;
   cv::Mat1f obstacle_distance_m_;
 };
