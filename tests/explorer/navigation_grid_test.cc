@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "test_grids.h"
 
 namespace stereonav {
@@ -84,6 +86,31 @@ TEST(NavigationGridTest, ClearanceOfFreePatchesInUnknownCountsUnknownAndTheGridE
   EXPECT_NEAR(grid.clearance(9, 5), -0.05, 1e-6);
   // Unknown is no obstacle: the distance to obstacles runs to the grid's edge.
   EXPECT_NEAR(grid.obstacleDistance(12, 6), 0.65, 1e-6);  // the south edge, 7 cells away
+}
+
+TEST(NavigationGridTest, ObstacleDistancesAreExactUpToTheHorizonAndAtLeastItBeyond) {
+  // 0.1 m cells: a free room (columns 5-34, rows 5-24) in unknown, a wall at column 20 in it and a
+  // post far out in the unknown at (50, 15).
+  TestGrid cells(60, 30);
+  cells.free(5, 5, 34, 24).occupied(20, 5, 20, 12).occupied(50, 15, 50, 15);
+  NavigationGridOptions options;
+  options.distance_horizon_m = 0.5;
+  const NavigationGrid grid(cells.grid(), {}, options);
+  EXPECT_EQ(grid.freeCells(), cv::Rect(5, 5, 30, 20));
+  // Beside the wall, 3 cells west of it: (3 - 0.5) x 0.1, as without a horizon.
+  EXPECT_NEAR(grid.obstacleDistance(17, 8), 0.25, 1e-6);
+  // Diagonally off the wall's end (20, 12): a hypotenuse of 3 and 4 cells.
+  EXPECT_NEAR(grid.obstacleDistance(23, 16), 0.45, 1e-6);
+  // Farther than the horizon from any obstacle or the grid's edge: at least the horizon.
+  EXPECT_GE(grid.obstacleDistance(34, 15), 0.5f);
+  EXPECT_GE(grid.obstacleDistance(10, 22), 0.5f);
+  EXPECT_NEAR(grid.obstacleDistance(20, 8), -0.05, 1e-6);  // the wall itself
+  // Without a horizon the far values are exact: from (34, 15) the wall's end (20, 12) is 14 and 3
+  // cells away, nearer than the post (16 cells) and the grid's north edge (15 cells).
+  const NavigationGrid exact(cells.grid(), {}, NavigationGridOptions{});
+  EXPECT_NEAR(exact.obstacleDistance(34, 15), (std::sqrt(14.0 * 14.0 + 3.0 * 3.0) - 0.5) * 0.1, 1e-6);
+  EXPECT_NEAR(exact.obstacleDistance(17, 8), 0.25, 1e-6);
+  EXPECT_NEAR(exact.obstacleDistance(23, 16), 0.45, 1e-6);
 }
 
 TEST(NavigationGridTest, SmallUnknownIslandsInsideFreeSpaceAreFreeButNotThoseTouchingObstacles) {
