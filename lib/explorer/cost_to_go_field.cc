@@ -8,16 +8,16 @@ namespace stereonav {
 
 CostToGoField::CostToGoField(const NavigationGrid& grid, const CostToGoOptions& options)
     : grid_(grid),
-      traversable_(grid.height(), grid.width(), uint8_t{0}),
-      step_weight_(grid.height(), grid.width(), 1.0f) {
-  // Only free cells have room for the body.
-  const cv::Rect& free_cells = grid.freeCells();
-  for (int row = free_cells.y; row < free_cells.y + free_cells.height; ++row) {
-    for (int col = free_cells.x; col < free_cells.x + free_cells.width; ++col) {
-      traversable_(row, col) = grid.clearance(col, row) >= options.body_radius_m ? 1 : 0;
+      box_(grid.freeCells()),
+      traversable_(box_.size(), uint8_t{0}),
+      step_weight_(box_.size(), 1.0f) {
+  for (int row = 0; row < box_.height; ++row) {
+    for (int col = 0; col < box_.width; ++col) {
+      const int grid_col = box_.x + col, grid_row = box_.y + row;
+      traversable_(row, col) = grid.clearance(grid_col, grid_row) >= options.body_radius_m ? 1 : 0;
       // Steps are taken between traversable cells only.
       if (!traversable_(row, col) || options.repulsion_distance_m <= 0.0) continue;
-      const double beyond = grid.obstacleDistance(col, row) - options.body_radius_m;
+      const double beyond = grid.obstacleDistance(grid_col, grid_row) - options.body_radius_m;
       const double s = std::max(0.0, 1.0 - beyond / options.repulsion_distance_m);
       step_weight_(row, col) = static_cast<float>(1.0 + options.repulsion_weight * std::min(1.0, s) * std::min(1.0, s));
     }
@@ -110,14 +110,15 @@ class OpenCells {
 }  // namespace
 
 void CostToGoField::compute(const std::vector<GoalCell>& goals) {
-  const int width = grid_.width(), height = grid_.height();
+  const int width = box_.width, height = box_.height;
   cost_.create(height, width);
   cost_.setTo(std::numeric_limits<double>::infinity());
   parent_.create(height, width);
   parent_.setTo(-1);
   label_.create(height, width);
   label_.setTo(-1);
-  // The maps are continuous (created whole), so a cell's index addresses each of them.
+  // The maps are continuous (created whole), so a cell's index in the box addresses each of them.
+  // Cells are ordered by index as by (row, col), in the box as in the grid.
   double* const cost = cost_[0];
   int* const parent = parent_[0];
   int* const label = label_[0];
@@ -125,8 +126,8 @@ void CostToGoField::compute(const std::vector<GoalCell>& goals) {
   const float* const weight = step_weight_[0];
   OpenCells open(static_cast<size_t>(width) * height);
   for (const GoalCell& goal : goals) {
-    if (!grid_.contains(goal.col, goal.row) || !this->traversable(goal.col, goal.row)) continue;
-    const int index = goal.row * width + goal.col;
+    if (!this->traversable(goal.col, goal.row)) continue;
+    const int index = (goal.row - box_.y) * width + goal.col - box_.x;
     if (goal.seed_cost >= cost[index]) continue;
     cost[index] = goal.seed_cost;
     parent[index] = index;
@@ -164,11 +165,11 @@ void CostToGoField::compute(const std::vector<GoalCell>& goals) {
 
 std::vector<cv::Point> CostToGoField::pathFrom(int col, int row) const {
   std::vector<cv::Point> path;
-  if (!grid_.contains(col, row) || !reachable(col, row)) return path;
-  const int width = grid_.width();
-  int index = row * width + col;
+  if (!reachable(col, row)) return path;
+  const int width = box_.width;
+  int index = (row - box_.y) * width + col - box_.x;
   while (true) {
-    path.emplace_back(index % width, index / width);
+    path.emplace_back(box_.x + index % width, box_.y + index / width);
     const int next = parent_(index / width, index % width);
     if (next == index) return path;
     index = next;

@@ -2,6 +2,7 @@
 
 #include <opencv2/core.hpp>
 
+#include <limits>
 #include <vector>
 
 #include "explorer/navigation_grid.h"
@@ -43,20 +44,27 @@ class CostToGoField {
   // Recomputes the field from `goals` (non-traversable goals are ignored).
   void compute(const std::vector<GoalCell>& goals);
 
-  bool traversable(int col, int row) const { return traversable_(row, col) != 0; }
-  bool reachable(int col, int row) const { return parent_(row, col) >= 0; }
-  double cost(int col, int row) const { return cost_(row, col); }
+  bool traversable(int col, int row) const { return inBox(col, row) && traversable_(row - box_.y, col - box_.x) != 0; }
+  bool reachable(int col, int row) const { return inBox(col, row) && parent_(row - box_.y, col - box_.x) >= 0; }
+  double cost(int col, int row) const {
+    return inBox(col, row) ? cost_(row - box_.y, col - box_.x) : std::numeric_limits<double>::infinity();
+  }
   // The label of the goal that the path from this cell ends at (-1 if unreachable).
-  int label(int col, int row) const { return label_(row, col); }
+  int label(int col, int row) const { return inBox(col, row) ? label_(row - box_.y, col - box_.x) : -1; }
   // The cells from (col, row) to its goal, both included; empty if unreachable.
   std::vector<cv::Point> pathFrom(int col, int row) const;
 
  private:
+  bool inBox(int col, int row) const { return box_.contains(cv::Point(col, row)); }
+
   const NavigationGrid& grid_;
+  // Only free cells can be traversable, so the field covers the free cells' box (the grid's
+  // NavigationGrid::freeCells) and its maps are indexed from the box's corner.
+  cv::Rect box_;
   cv::Mat1b traversable_;
   cv::Mat1f step_weight_;
   cv::Mat1d cost_;
-  cv::Mat1i parent_;  // row * width + col of the next cell towards the goal; itself at a goal
+  cv::Mat1i parent_;  // row * width + col (in the box) of the next cell towards the goal; itself at a goal
   cv::Mat1i label_;
 };
 
