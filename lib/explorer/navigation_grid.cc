@@ -9,19 +9,19 @@ namespace stereonav {
 namespace {
 
 // Metres from each cell centre in `window` to the near edge of the nearest cell whose class is
-// not below `clear_below`, 0 outside the window. The cells around the window count as blocked,
-// as does the grid's border, so nothing plans off the map.
+// not below `clear_below`, -half a cell outside the window (as at a blocked cell). The cells
+// around the window count as blocked, as does the grid's border, so nothing plans off the map.
 cv::Mat1f distanceToBlocked(const cv::Mat1b& classes, uint8_t clear_below, const cv::Rect& window,
                             double resolution) {
-  cv::Mat1f cells(classes.size(), 0.0f);
+  const double cell_m = static_cast<float>(resolution);
+  cv::Mat1f metres(classes.size(), static_cast<float>(-0.5 * cell_m));
   if (!window.empty()) {
     cv::Mat1b padded;
     cv::copyMakeBorder(classes(window) < clear_below, padded, 1, 1, 1, 1, cv::BORDER_CONSTANT, cv::Scalar(0));
-    cv::Mat1f distances;
-    cv::distanceTransform(padded, distances, cv::DIST_L2, cv::DIST_MASK_PRECISE);
-    distances(cv::Rect(1, 1, window.width, window.height)).copyTo(cells(window));
+    cv::Mat1f cells;
+    cv::distanceTransform(padded, cells, cv::DIST_L2, cv::DIST_MASK_PRECISE);
+    cells(cv::Rect(1, 1, window.width, window.height)).convertTo(metres(window), CV_32F, cell_m, -0.5 * cell_m);
   }
-  cv::Mat1f metres = (cells - 0.5f) * static_cast<float>(resolution);
   return metres;
 }
 
