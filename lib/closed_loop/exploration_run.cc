@@ -197,6 +197,7 @@ ExplorationReport runExploration(const World& world, const ExplorationConfig& co
   if (!job.record_rawlog.empty()) recorder.emplace(job.record_rawlog, config.simulator.rawlog, config.simulator.rig);
   std::vector<mrpt::poses::CPose2D> map_path, true_path;
   NavigationTrace trace;
+  const ReachableFloor reachable(truth, robot_options.radius_m, start.x(), start.y());
 
   ExplorationReport report;
   double next_coverage_sample_s = job.coverage_sample_period_s;
@@ -212,8 +213,7 @@ ExplorationReport runExploration(const World& world, const ExplorationConfig& co
                    robot_options.radius_m);
       if (callbacks.on_frame) callbacks.on_frame(map_path.size(), frame_limit);
       if (job.coverage_sample_period_s > 0.0 && simulation.time() >= next_coverage_sample_s) {
-        recordMilestones(report, measureCoverage(truth, mapper.grid(), robot_options.radius_m, start.x(), start.y()),
-                         simulation.time());
+        recordMilestones(report, reachable.measure(mapper.grid()), simulation.time());
         next_coverage_sample_s += job.coverage_sample_period_s;
       }
     }
@@ -239,7 +239,7 @@ ExplorationReport runExploration(const World& world, const ExplorationConfig& co
   report.frames_localized = mapper.framesLocalized();
   if (!map_path.empty()) report.trajectory_error = trajectoryError(map_path, true_path);
   const DisparityTaggedGrid grid = mapper.grid();
-  report.coverage = measureCoverage(truth, grid, robot_options.radius_m, start.x(), start.y());
+  report.coverage = reachable.measure(grid);
   recordMilestones(report, report.coverage, simulation.time());
   saveMapOutputs(mapper.mapper().map(), config.mapping.grid.stereo.update.scale, map_path, job.output_prefix);
   trace.save(job.output_prefix);

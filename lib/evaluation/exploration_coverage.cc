@@ -6,9 +6,8 @@
 
 namespace stereonav {
 
-ExplorationCoverage measureCoverage(const GroundTruthMap& truth, const DisparityTaggedGrid& map,
-                                    double robot_radius_m, double start_x, double start_y) {
-  ExplorationCoverage coverage;
+ReachableFloor::ReachableFloor(const GroundTruthMap& truth, double robot_radius_m, double start_x, double start_y)
+    : cell_area_m2_(truth.resolution() * truth.resolution()) {
   const double resolution = truth.resolution();
   cv::Mat1b free(truth.height(), truth.width());
   for (int iy = 0; iy < truth.height(); ++iy) {
@@ -25,25 +24,31 @@ ExplorationCoverage measureCoverage(const GroundTruthMap& truth, const Disparity
   const int start_ix = static_cast<int>(std::floor((start_x - truth.xMin()) / resolution));
   const int start_iy = static_cast<int>(std::floor((start_y - truth.yMin()) / resolution));
   if (start_ix < 0 || start_iy < 0 || start_ix >= free.cols || start_iy >= free.rows || !centre_ok(start_iy, start_ix)) {
-    return coverage;
+    return;
   }
   cv::floodFill(centre_ok, cv::Point(start_ix, start_iy), cv::Scalar(128), nullptr, cv::Scalar(0), cv::Scalar(0), 4);
   // Swept by the body: within a radius of a reachable centre.
   cv::Mat1b not_reached = centre_ok != 128;
   cv::Mat1f to_reached;
   cv::distanceTransform(not_reached, to_reached, cv::DIST_L2, cv::DIST_MASK_PRECISE);
-  const double cell_area = resolution * resolution;
   for (int iy = 0; iy < free.rows; ++iy) {
     for (int ix = 0; ix < free.cols; ++ix) {
       if (!free(iy, ix) || to_reached(iy, ix) * resolution > robot_radius_m) continue;
-      coverage.reachable_free_m2 += cell_area;
-      int col = 0, row = 0;
-      const double x = truth.xMin() + (ix + 0.5) * resolution, y = truth.yMin() + (iy + 0.5) * resolution;
-      if (!map.cellAt(x, y, col, row)) continue;
-      const CellClass cell = map.scale().classify(map.occupancy(col, row));
-      if (cell != CellClass::kUnknown) coverage.seen_m2 += cell_area;
-      if (cell == CellClass::kFree) coverage.covered_m2 += cell_area;
+      cell_centres_.emplace_back(truth.xMin() + (ix + 0.5) * resolution, truth.yMin() + (iy + 0.5) * resolution);
+      area_m2_ += cell_area_m2_;
     }
+  }
+}
+
+ExplorationCoverage ReachableFloor::measure(const DisparityTaggedGrid& map) const {
+  ExplorationCoverage coverage;
+  coverage.reachable_free_m2 = area_m2_;
+  for (const cv::Point2d& centre : cell_centres_) {
+    int col = 0, row = 0;
+    if (!map.cellAt(centre.x, centre.y, col, row)) continue;
+    const CellClass cell = map.scale().classify(map.occupancy(col, row));
+    if (cell != CellClass::kUnknown) coverage.seen_m2 += cell_area_m2_;
+    if (cell == CellClass::kFree) coverage.covered_m2 += cell_area_m2_;
   }
   if (coverage.reachable_free_m2 > 0.0) {
     coverage.coverage = coverage.covered_m2 / coverage.reachable_free_m2;

@@ -1,5 +1,9 @@
 #pragma once
 
+#include <opencv2/core.hpp>
+
+#include <vector>
+
 #include "occupancy_grid/disparity_tagged_grid.h"
 #include "simulator/ground_truth_map.h"
 
@@ -23,9 +27,21 @@ struct ExplorationCoverage {
   double free_area_m2 = 0.0;
 };
 
-// The map must be in the world frame (mapped from a start pose equal to the world's, e.g. dead
-// reckoning starting at the true start pose, which then drifts: misplaced cells count as missed).
-ExplorationCoverage measureCoverage(const GroundTruthMap& truth, const DisparityTaggedGrid& map,
-                                    double robot_radius_m, double start_x, double start_y);
+// The true free floor a robot's body can reach from its start: the true free cells a disc of the
+// robot's radius covers somewhere along a collision-free motion from the start. Found once per
+// world and start; each map of a run is then measured against it.
+class ReachableFloor {
+ public:
+  ReachableFloor(const GroundTruthMap& truth, double robot_radius_m, double start_x, double start_y);
+
+  // The map must be in the world frame (mapped from a start pose equal to the world's, e.g. dead
+  // reckoning starting at the true start pose, which then drifts: misplaced cells count as missed).
+  ExplorationCoverage measure(const DisparityTaggedGrid& map) const;
+
+ private:
+  std::vector<cv::Point2d> cell_centres_;  // world metres
+  double cell_area_m2_;
+  double area_m2_ = 0.0;
+};
 
 }  // namespace stereonav

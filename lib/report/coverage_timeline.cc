@@ -30,9 +30,10 @@ std::vector<CoverageSample> replayCoverage(const ExplorationConfig& config, cons
   if (config.pose_source == MapPoseSource::kGroundTruth) mapping.ground_truth_poses = true_poses;
 
   std::vector<CoverageSample> samples;
+  const ReachableFloor reachable(truth, config.simulator.robot.radius_m, true_poses.front().x(),
+                                 true_poses.front().y());
   const auto sample = [&](double time_s, const mrpt::maps::CMetricMap& map) {
-    const ExplorationCoverage coverage = measureCoverage(truth, gridOfMap(map, scale), config.simulator.robot.radius_m,
-                                                         true_poses.front().x(), true_poses.front().y());
+    const ExplorationCoverage coverage = reachable.measure(gridOfMap(map, scale));
     samples.push_back({time_s, coverage.coverage, coverage.seen_coverage});
   };
   MappingCallbacks callbacks;

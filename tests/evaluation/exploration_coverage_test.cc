@@ -33,7 +33,7 @@ TEST(ExplorationCoverageTest, CountsTrueFreeCellsTheMapCallsFreeAndThoseItHasSee
   // Reachable and mapped free: 200 cells less 8 of the box and 2 corners; mapped occupied: 100
   // cells less 8 of the box.
   map.free(0, 0, 9, 19).occupied(10, 0, 14, 19);
-  const ExplorationCoverage coverage = measureCoverage(truth, map.grid(), 0.25, 0.5, 0.5);
+  const ExplorationCoverage coverage = ReachableFloor(truth, 0.25, 0.5, 0.5).measure(map.grid());
   EXPECT_NEAR(coverage.reachable_free_m2, 380 * 0.01, 1e-9);
   EXPECT_NEAR(coverage.covered_m2, 190 * 0.01, 1e-9);
   EXPECT_NEAR(coverage.seen_m2, (190 + 92) * 0.01, 1e-9);
@@ -50,11 +50,11 @@ TEST(ExplorationCoverageTest, FloorTheBodyCannotReachDoesNotCount) {
   const GroundTruthMap truth = truthAtTenCentimetres("[world]\nbounds = 0 0 2 2\n[wall.w]\npoints = 1.5 0; 1.5 2\n");
   TestGrid map(20, 20);
   map.free(0, 0, 19, 19);
-  const ExplorationCoverage coverage = measureCoverage(truth, map.grid(), 0.25, 0.5, 0.5);
+  const ExplorationCoverage coverage = ReachableFloor(truth, 0.25, 0.5, 0.5).measure(map.grid());
   EXPECT_NEAR(coverage.reachable_free_m2, (14 * 20 - 4) * 0.01, 1e-9);
   EXPECT_NEAR(coverage.coverage, 1.0, 1e-9);
   // Started inside the wall: nothing is reachable.
-  EXPECT_EQ(measureCoverage(truth, map.grid(), 0.25, 1.5, 1.0).reachable_free_m2, 0.0);
+  EXPECT_EQ(ReachableFloor(truth, 0.25, 1.5, 1.0).measure(map.grid()).reachable_free_m2, 0.0);
 }
 
 }  // namespace
