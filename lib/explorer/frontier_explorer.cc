@@ -57,7 +57,7 @@ void FrontierExplorer::updateMap(const DisparityTaggedGrid& grid, const mrpt::po
   if (grid_) goals_.carryTargetOver(*grid_, frontiers_, frontier_memory_);
   seen_free_.update(grid, pose);
   grid_ = std::make_unique<NavigationGrid>(grid, visited_, grid_options_, guard_.rememberedObstacles(),
-                                           seen_free_.cells());
+                                           seen_free_.cells(), grid_.get());
   if (relaxation_ >= Relaxation::kBareBodyPastSpecks) grid_->freeSpecks(options_.speck_cells);
   map_frontiers_ = findFrontiers(*grid_, options_.min_frontier_cells);
   awaiting_map_ = false;

@@ -25,11 +25,18 @@ cv::Mat1f distanceToBlocked(const cv::Mat1b& classes, uint8_t clear_below, const
   return metres;
 }
 
+// `box` grown by `cells` on every side, within a grid of `size`; empty if `box` is.
+cv::Rect grownInside(const cv::Rect& box, int cells, const cv::Size& size) {
+  if (box.empty()) return cv::Rect();
+  return cv::Rect(box.x - cells, box.y - cells, box.width + 2 * cells, box.height + 2 * cells) &
+         cv::Rect(cv::Point(), size);
+}
+
 }  // namespace
 
 NavigationGrid::NavigationGrid(const DisparityTaggedGrid& grid, const std::vector<mrpt::poses::CPose2D>& visited,
                                const NavigationGridOptions& options, const std::vector<cv::Point2d>& contacts,
-                               const std::vector<cv::Point2d>& seen_free)
+                               const std::vector<cv::Point2d>& seen_free, const NavigationGrid* previous)
     : frame_(grid.frame()),
       distance_horizon_m_(options.distance_horizon_m),
       cell_class_(grid.height(), grid.width()),
@@ -76,12 +83,31 @@ NavigationGrid::NavigationGrid(const DisparityTaggedGrid& grid, const std::vecto
   }
   free_cells_ = cv::boundingRect(cell_class_ == kFree);
   if (options.max_hole_cells > 0) freeIslands(kUnknown, kUnknown, 4, options.max_hole_cells);
-  computeDistances();
+  const bool same_cells = previous != nullptr && previous->cell_class_.size() == cell_class_.size() &&
+                          previous->frame_.origin_x == frame_.origin_x && previous->frame_.origin_y == frame_.origin_y &&
+                          previous->frame_.resolution == frame_.resolution &&
+                          previous->distance_horizon_m_ == distance_horizon_m_;
+  if (same_cells && horizonCells() > 0) {
+    clearance_m_ = previous->clearance_m_.clone();
+    obstacle_distance_m_ = previous->obstacle_distance_m_.clone();
+    updateDistances(previous->cell_class_);
+  } else {
+    computeDistances();
+  }
 }
 
 void NavigationGrid::freeSpecks(int max_cells) {
+  const cv::Mat1b classes_before = cell_class_.clone();
   freeIslands(kImprecise, kOccupied, 8, max_cells);
-  computeDistances();
+  if (horizonCells() > 0) {
+    updateDistances(classes_before);
+  } else {
+    computeDistances();
+  }
+}
+
+int NavigationGrid::horizonCells() const {
+  return std::isfinite(distance_horizon_m_) ? static_cast<int>(std::ceil(distance_horizon_m_ / frame_.resolution)) : 0;
 }
 
 void NavigationGrid::computeDistances() {
@@ -90,15 +116,26 @@ void NavigationGrid::computeDistances() {
   clearance_m_ = distanceToBlocked(cell_class_, kUnknown, free_cells_, frame_.resolution);
   // Obstacle distances are wanted at free cells and up to the horizon only, so the box grows by
   // the horizon: a nearer obstacle lies inside it, and its ring is farther than the horizon.
-  const cv::Rect grid_box(0, 0, width(), height());
-  const int reach = std::isfinite(distance_horizon_m_)
-                        ? static_cast<int>(std::ceil(distance_horizon_m_ / frame_.resolution))
-                        : std::max(width(), height());
-  const cv::Rect near_free = free_cells_.empty() ? cv::Rect()
-                                                : cv::Rect(free_cells_.x - reach, free_cells_.y - reach,
-                                                           free_cells_.width + 2 * reach, free_cells_.height + 2 * reach) &
-                                                      grid_box;
+  const int reach = horizonCells() > 0 ? horizonCells() : std::max(width(), height());
+  const cv::Rect near_free = grownInside(free_cells_, reach, cell_class_.size());
   obstacle_distance_m_ = distanceToBlocked(cell_class_, kImprecise, near_free, frame_.resolution);
+}
+
+void NavigationGrid::updateDistances(const cv::Mat1b& classes_before) {
+  // A cell farther than the horizon from every changed cell keeps its distances: a nearer
+  // blocked cell it had is still there, and any new one is beyond the horizon. The cells within
+  // it are taken again in a window grown by the horizon once more, so that their nearer blocked
+  // cells lie inside and its blocked ring lies beyond the horizon.
+  const cv::Rect changed = cv::boundingRect(cell_class_ != classes_before);
+  if (changed.empty()) return;
+  const int reach = horizonCells();
+  const cv::Rect updated = grownInside(changed, reach, cell_class_.size());
+  const cv::Rect window = grownInside(changed, 2 * reach, cell_class_.size());
+  const cv::Rect in_window = updated - window.tl();
+  distanceToBlocked(cell_class_(window), kUnknown, cv::Rect(cv::Point(), window.size()), frame_.resolution)(in_window)
+      .copyTo(clearance_m_(updated));
+  distanceToBlocked(cell_class_(window), kImprecise, cv::Rect(cv::Point(), window.size()), frame_.resolution)(in_window)
+      .copyTo(obstacle_distance_m_(updated));
 }
 
 void NavigationGrid::freeIslands(uint8_t lowest_class, uint8_t highest_class, int connectivity, int max_cells) {

@@ -28,9 +28,10 @@ struct NavigationGridOptions {
   // Occupancy values G at or above this hold obstacle evidence from several readings (each adds
   // K, paper section 3.4): mapHoldsObstacle.
   int sure_obstacle_g = 200;
-  // obstacleDistance is exact at free cells up to this distance (metres) and at least this
-  // beyond it: nothing that reads it looks farther, and the obstacle distance transform then
-  // covers the free floor's surroundings instead of the whole map.
+  // clearance and obstacleDistance are exact at free cells up to this distance (metres) and at
+  // least this beyond it: nothing that reads them looks farther. The obstacle distances then need
+  // only the free floor's surroundings instead of the whole map, and a grid made after another of
+  // the same cells takes again only the distances near cells whose class changed.
   double distance_horizon_m = std::numeric_limits<double>::infinity();
 };
 
@@ -49,10 +50,11 @@ class NavigationGrid {
   // robot found itself blocked by something the map does not show (a table top seen edge-on,
   // paper section 6.1): their cells are occupied, as a bumper would report them.
   // `seen_free` are points the robot has seen free from up close (seen_free_memory.h): their
-  // cells are free where the map holds them unknown or imprecise.
+  // cells are free where the map holds them unknown or imprecise. `previous`: the grid made from
+  // the map before (e.g. a frame earlier), whose distances are kept where they still hold.
   NavigationGrid(const DisparityTaggedGrid& grid, const std::vector<mrpt::poses::CPose2D>& visited,
                  const NavigationGridOptions& options, const std::vector<cv::Point2d>& contacts = {},
-                 const std::vector<cv::Point2d>& seen_free = {});
+                 const std::vector<cv::Point2d>& seen_free = {}, const NavigationGrid* previous = nullptr);
 
   int width() const { return cell_class_.cols; }
   int height() const { return cell_class_.rows; }
@@ -77,6 +79,8 @@ class NavigationGrid {
   const cv::Rect& freeCells() const { return free_cells_; }
   // Distance from the cell's centre to the nearest cell that is not free (or to the grid's edge),
   // counted to that cell's near edge: a disc of this radius at the centre overlaps free cells only.
+  // Exact up to the options' distance_horizon_m, at least that beyond; -half a cell at cells that
+  // are not free.
   float clearance(int col, int row) const { return clearance_m_(row, col); }
   // The same to the nearest occupied or imprecise cell only (the potential field's repulsion). At
   // free cells it is exact up to the options' distance_horizon_m and at least that beyond; at
@@ -88,7 +92,13 @@ class NavigationGrid {
   // 8) of at most `max_cells` cells, bordered by free cells only (not by other cells or the
   // grid's edge), become free.
   void freeIslands(uint8_t lowest_class, uint8_t highest_class, int connectivity, int max_cells);
+  // Takes every distance afresh.
   void computeDistances();
+  // Takes again the distances near cells whose class differs from `classes_before`, for which
+  // the distances held now were taken (with the same horizon).
+  void updateDistances(const cv::Mat1b& classes_before);
+  // Cells within the distance horizon; 0 if it is infinite.
+  int horizonCells() const;
 
   GridFrame frame_;
   double distance_horizon_m_;

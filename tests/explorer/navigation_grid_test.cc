@@ -113,6 +113,55 @@ TEST(NavigationGridTest, ObstacleDistancesAreExactUpToTheHorizonAndAtLeastItBeyo
   EXPECT_NEAR(exact.obstacleDistance(23, 16), 0.45, 1e-6);
 }
 
+// Every free cell of `updated` holds the distances `fresh` holds, where these are within the
+// horizon, and at least the horizon where they are not.
+void expectSameDistancesWithin(const NavigationGrid& updated, const NavigationGrid& fresh, double horizon_m) {
+  for (int row = 0; row < fresh.height(); ++row) {
+    for (int col = 0; col < fresh.width(); ++col) {
+      if (fresh.cellClass(col, row) != NavigationGrid::kFree) continue;
+      SCOPED_TRACE(testing::Message() << "cell " << col << ", " << row);
+      if (fresh.clearance(col, row) < horizon_m) {
+        EXPECT_EQ(updated.clearance(col, row), fresh.clearance(col, row));
+      } else {
+        EXPECT_GE(updated.clearance(col, row), horizon_m);
+      }
+      if (fresh.obstacleDistance(col, row) < horizon_m) {
+        EXPECT_EQ(updated.obstacleDistance(col, row), fresh.obstacleDistance(col, row));
+      } else {
+        EXPECT_GE(updated.obstacleDistance(col, row), horizon_m);
+      }
+    }
+  }
+}
+
+TEST(NavigationGridTest, AGridMadeAfterAnotherTakesAgainOnlyWhatChangedAndHoldsTheSameDistances) {
+  // 0.1 m cells: a free room in unknown; then a new wall in it, a strip of it seen free beyond
+  // and a pillar gone, and an obstacle speck that freeSpecks removes.
+  TestGrid before(60, 40);
+  before.free(5, 5, 44, 34).occupied(30, 20, 31, 21);
+  TestGrid after(60, 40);
+  after.free(5, 5, 54, 34).occupied(12, 5, 12, 18).occupied(40, 30, 40, 30);
+  NavigationGridOptions options;
+  options.distance_horizon_m = 0.5;
+  const NavigationGrid previous(before.grid(), {}, options);
+  const NavigationGrid updated(after.grid(), {}, options, {}, {}, &previous);
+  const NavigationGrid fresh(after.grid(), {}, options);
+  expectSameDistancesWithin(updated, fresh, 0.5);
+  // Beside the new wall, 2 cells east of it, both say (2 - 0.5) x 0.1.
+  EXPECT_NEAR(updated.obstacleDistance(14, 10), 0.15, 1e-6);
+  EXPECT_NEAR(updated.clearance(14, 10), 0.15, 1e-6);
+  // Where the pillar stood, nothing is near any more.
+  EXPECT_GE(updated.obstacleDistance(30, 20), 0.5f);
+
+  NavigationGrid specks_freed(after.grid(), {}, options, {}, {}, &previous);
+  specks_freed.freeSpecks(1);
+  NavigationGrid specks_freed_fresh(after.grid(), {}, options);
+  specks_freed_fresh.freeSpecks(1);
+  EXPECT_EQ(specks_freed.cellClass(40, 30), NavigationGrid::kFree);
+  expectSameDistancesWithin(specks_freed, specks_freed_fresh, 0.5);
+  EXPECT_GE(specks_freed.obstacleDistance(41, 30), 0.5f);
+}
+
 TEST(NavigationGridTest, SmallUnknownIslandsInsideFreeSpaceAreFreeButNotThoseTouchingObstacles) {
   TestGrid cells(20, 20);
   cells.free(0, 0, 19, 19).unknown(5, 5, 6, 6).unknown(10, 5, 12, 6).unknown(15, 5, 15, 5).occupied(16, 5, 16, 5);
