@@ -41,6 +41,17 @@ std::vector<GoalCell> GoalSelection::goals(const NavigationGrid& grid, const Cos
   // Looking from afar, a step nearer the frontier is worth more than any step of path costs
   // (at most 1 + repulsion_weight per metre): the nearest place the body reaches wins.
   const double distance_cost = look_from_m > 0.0 ? 2.0 * (1.0 + options_.repulsion_weight) : 0.0;
+  // The cells within reach of a frontier cell, row by row, with what standing there adds.
+  struct Offset {
+    int dc, dr;
+    double cost;
+  };
+  std::vector<Offset> disc;
+  for (int dr = -reach; dr <= reach; ++dr) {
+    for (int dc = -reach; dc <= reach; ++dc) {
+      if (dc * dc + dr * dr <= reach_sq) disc.push_back({dc, dr, std::hypot(dc, dr) * grid.resolution() * distance_cost});
+    }
+  }
   // Per traversable cell (inside the free cells' box, as `box` holds them) the cheapest seed and
   // its frontier: goals of overlapping frontiers are not repeated.
   const cv::Rect& box = grid.freeCells();
@@ -51,15 +62,13 @@ std::vector<GoalCell> GoalSelection::goals(const NavigationGrid& grid, const Cos
     const double seed_cost = (isTarget(grid, frontiers[i], goal_radius, memory) ? 0.0 : options_.target_switch_penalty_m) +
                              (waits ? options_.pocket_penalty_m : 0.0);
     for (const cv::Point& cell : frontiers[i].cells) {
-      for (int dr = -reach; dr <= reach; ++dr) {
-        for (int dc = -reach; dc <= reach; ++dc) {
-          const int c = cell.x + dc, r = cell.y + dr;
-          if (dc * dc + dr * dr > reach_sq || !grid.contains(c, r) || !field.traversable(c, r)) continue;
-          const double cost = seed_cost + std::hypot(dc, dr) * grid.resolution() * distance_cost;
-          if (cost < seed(r - box.y, c - box.x)) {
-            seed(r - box.y, c - box.x) = cost;
-            label(r - box.y, c - box.x) = static_cast<int>(i);
-          }
+      for (const Offset& offset : disc) {
+        const int c = cell.x + offset.dc, r = cell.y + offset.dr;
+        if (!field.traversable(c, r)) continue;
+        const double cost = seed_cost + offset.cost;
+        if (cost < seed(r - box.y, c - box.x)) {
+          seed(r - box.y, c - box.x) = cost;
+          label(r - box.y, c - box.x) = static_cast<int>(i);
         }
       }
     }
