@@ -52,8 +52,8 @@ std::vector<GoalCell> GoalSelection::goals(const NavigationGrid& grid, const Cos
       if (dc * dc + dr * dr <= reach_sq) disc.push_back({dc, dr, std::hypot(dc, dr) * grid.resolution() * distance_cost});
     }
   }
-  // Per traversable cell (inside the free cells' box, as `box` holds them) the cheapest seed and
-  // its frontier: goals of overlapping frontiers are not repeated.
+  // Per cell of the free cells' box, where every traversable cell lies, the cheapest seed and its
+  // frontier: goals of overlapping frontiers are not repeated.
   const cv::Rect& box = grid.freeCells();
   cv::Mat1d seed(box.size(), std::numeric_limits<double>::infinity());
   cv::Mat1i label(box.size(), -1);

@@ -97,7 +97,8 @@ class NavigationGrid {
   // Takes again the distances near cells whose class differs from `classes_before`, for which
   // the distances held now were taken (with the same horizon).
   void updateDistances(const cv::Mat1b& classes_before);
-  // Cells within the distance horizon; 0 if it is infinite.
+  // Cells within the distance horizon; 0 if it is infinite (or 0): then every distance is taken
+  // afresh and exactly.
   int horizonCells() const;
 
   GridFrame frame_;
