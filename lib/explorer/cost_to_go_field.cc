@@ -3,14 +3,19 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace stereonav {
 
 CostToGoField::CostToGoField(const NavigationGrid& grid, const CostToGoOptions& options)
     : grid_(grid),
       box_(grid.freeCells()),
+      // The weight 1 + repulsion_weight * s^2 for s in [0, 1].
+      min_weight_(1.0 + std::min(0.0, options.repulsion_weight)),
+      max_weight_(1.0 + std::max(0.0, options.repulsion_weight)),
       traversable_(box_.size(), uint8_t{0}),
       step_weight_(box_.size(), 1.0f) {
+  if (!(min_weight_ > 0.0)) throw std::invalid_argument("cost-to-go: repulsion_weight must be above -1");
   for (int row = 0; row < box_.height; ++row) {
     for (int col = 0; col < box_.width; ++col) {
       const int grid_col = box_.x + col, grid_row = box_.y + row;
@@ -26,39 +31,37 @@ CostToGoField::CostToGoField(const NavigationGrid& grid, const CostToGoOptions& 
 
 namespace {
 
-// The open cells of the wavefront, lowest (cost, index) first: a 4-ary heap that lowers a cell's
-// cost in place, so each cell is in it at most once (a std::priority_queue keeps every stale
-// entry). Pairs are ordered as std::pair orders them, the cell index breaking ties, so cells
-// leave in exactly the order a priority queue of pairs gives.
+// The open cells of the wavefront, lowest (cost, index) first: the cell index breaks ties as
+// std::pair orders them, so cells leave in exactly the order a priority queue of pairs gives.
+// Costs leave in rising order and every step adds at least `min_step`, so the cells wait in
+// buckets half that wide: a cell reached from the bucket being emptied lands in a later one, at
+// most `max_step` beyond, which a ring of buckets covers, and the bucket being emptied is sorted
+// once and read in order. A cell whose cost is lowered leaves its old entry behind, skipped as
+// stale (its cost is no longer the cell's). The goals' seeds, at any cost, wait in a sorted list
+// and join when their bucket comes up.
 class OpenCells {
  public:
-  explicit OpenCells(size_t cells) : position_(cells, kAbsent) {}
+  OpenCells(double min_step, double max_step)
+      : bucket_width_(0.5 * min_step), ring_(static_cast<size_t>(std::ceil(max_step / bucket_width_)) + 2) {}
 
-  bool empty() const { return heap_.empty(); }
+  // Before the first pop.
+  void seed(int index, double cost) { seeds_.push_back({cost, index}); }
 
-  // Adds `index` at `cost`, or lowers its cost if it is open already.
-  void lower(int index, double cost) {
-    size_t at = position_[static_cast<size_t>(index)];
-    if (at == kAbsent) {
-      at = heap_.size();
-      heap_.push_back({cost, index});
-    } else {
-      heap_[at].cost = cost;
-    }
-    siftUp(at);
+  // While popping: a cell reached from the one popped last, at a higher cost.
+  void push(int index, double cost) {
+    ring_[static_cast<size_t>(bucketOf(cost)) % ring_.size()].push_back({cost, index});
+    ++waiting_;
   }
 
-  // Removes and returns the lowest cell.
-  int pop() {
-    const int index = heap_.front().index;
-    position_[static_cast<size_t>(index)] = kAbsent;
-    const Entry last = heap_.back();
-    heap_.pop_back();
-    if (!heap_.empty()) {
-      heap_.front() = last;
-      siftDown(0);
+  // The next open cell (`costs`: each cell's cost now), or -1 when none is left.
+  int pop(const double* costs) {
+    while (true) {
+      while (next_ < current_.size()) {
+        const Entry& entry = current_[next_++];
+        if (entry.cost == costs[entry.index]) return entry.index;
+      }
+      if (!advance()) return -1;
     }
-    return index;
   }
 
  private:
@@ -69,42 +72,42 @@ class OpenCells {
       return cost < other.cost || (cost == other.cost && index < other.index);
     }
   };
-  static constexpr size_t kAbsent = static_cast<size_t>(-1);
-  static constexpr size_t kArity = 4;
 
-  void place(size_t at, const Entry& entry) {
-    heap_[at] = entry;
-    position_[static_cast<size_t>(entry.index)] = at;
-  }
-  void siftUp(size_t at) {
-    const Entry entry = heap_[at];
-    while (at > 0) {
-      const size_t parent = (at - 1) / kArity;
-      if (!(entry < heap_[parent])) break;
-      place(at, heap_[parent]);
-      at = parent;
+  long bucketOf(double cost) const { return static_cast<long>(std::floor(cost / bucket_width_)); }
+
+  // Makes the next bucket that may hold cells the current one; false when no cell waits.
+  bool advance() {
+    if (!seeds_sorted_) {
+      std::sort(seeds_.begin(), seeds_.end());
+      seeds_sorted_ = true;
     }
-    place(at, entry);
-  }
-  void siftDown(size_t at) {
-    const Entry entry = heap_[at];
-    const size_t size = heap_.size();
-    while (true) {
-      const size_t first = at * kArity + 1;
-      if (first >= size) break;
-      size_t lowest = first;
-      for (size_t child = first + 1; child < std::min(first + kArity, size); ++child) {
-        if (heap_[child] < heap_[lowest]) lowest = child;
-      }
-      if (!(heap_[lowest] < entry)) break;
-      place(at, heap_[lowest]);
-      at = lowest;
+    if (waiting_ == 0) {
+      if (next_seed_ == seeds_.size()) return false;
+      bucket_ = bucketOf(seeds_[next_seed_].cost);
+    } else {
+      ++bucket_;
     }
-    place(at, entry);
+    current_.clear();
+    next_ = 0;
+    std::vector<Entry>& slot = ring_[static_cast<size_t>(bucket_) % ring_.size()];
+    waiting_ -= slot.size();
+    current_.swap(slot);
+    while (next_seed_ < seeds_.size() && bucketOf(seeds_[next_seed_].cost) == bucket_) {
+      current_.push_back(seeds_[next_seed_++]);
+    }
+    std::sort(current_.begin(), current_.end());
+    return true;
   }
 
-  std::vector<Entry> heap_;
-  std::vector<size_t> position_;
+  double bucket_width_;
+  std::vector<std::vector<Entry>> ring_;
+  size_t waiting_ = 0;  // entries in the ring
+  std::vector<Entry> seeds_;
+  bool seeds_sorted_ = false;
+  size_t next_seed_ = 0;
+  long bucket_ = 0;
+  std::vector<Entry> current_;
+  size_t next_ = 0;
 };
 
 }  // namespace
@@ -124,7 +127,10 @@ void CostToGoField::compute(const std::vector<GoalCell>& goals) {
   int* const label = label_[0];
   const uint8_t* const traversable = traversable_[0];
   const float* const weight = step_weight_[0];
-  OpenCells open(static_cast<size_t>(width) * height);
+  // Steps cost a cell's length (diagonal: sqrt(2) times) times the mean weight of its two cells.
+  const double resolution = grid_.resolution();
+  const double lengths[2] = {resolution, M_SQRT2 * resolution};
+  OpenCells open(lengths[0] * min_weight_, lengths[1] * max_weight_);
   for (const GoalCell& goal : goals) {
     if (!this->traversable(goal.col, goal.row)) continue;
     const int index = (goal.row - box_.y) * width + goal.col - box_.x;
@@ -132,12 +138,9 @@ void CostToGoField::compute(const std::vector<GoalCell>& goals) {
     cost[index] = goal.seed_cost;
     parent[index] = index;
     label[index] = goal.label;
-    open.lower(index, goal.seed_cost);
+    open.seed(index, goal.seed_cost);
   }
-  const double resolution = grid_.resolution();
-  const double lengths[2] = {resolution, M_SQRT2 * resolution};
-  while (!open.empty()) {
-    const int index = open.pop();
+  for (int index = open.pop(cost); index >= 0; index = open.pop(cost)) {
     const int row = index / width, col = index % width;
     const double here = cost[index];
     for (int dr = -1; dr <= 1; ++dr) {
@@ -156,7 +159,7 @@ void CostToGoField::compute(const std::vector<GoalCell>& goals) {
           cost[next_index] = next;
           parent[next_index] = index;
           label[next_index] = label[index];
-          open.lower(next_index, next);
+          open.push(next_index, next);
         }
       }
     }

@@ -61,6 +61,8 @@ class CostToGoField {
   // Only free cells can be traversable, so the field covers the free cells' box (the grid's
   // NavigationGrid::freeCells) and its maps are indexed from the box's corner.
   cv::Rect box_;
+  double min_weight_;  // the bounds of the step weights
+  double max_weight_;
   cv::Mat1b traversable_;
   cv::Mat1f step_weight_;
   cv::Mat1d cost_;

@@ -4,7 +4,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <limits>
+#include <queue>
 #include <random>
+#include <utility>
 
 #include "test_grids.h"
 
@@ -144,6 +148,72 @@ TEST(CostToGoFieldTest, EveryCellDescendsToTheCheapestGoalAndInheritsItsLabel) {
   EXPECT_EQ(field.label(23, 20), 0);  // x 2.35: 1.8 vs 1.1 + 1
   EXPECT_EQ(field.label(26, 20), 1);  // x 2.65: 2.1 vs 0.8 + 1
   EXPECT_EQ(field.pathFrom(26, 20).back(), cv::Point(34, 20));
+}
+
+TEST(CostToGoFieldTest, TiesBreakAsAPriorityQueueOfCostAndCellIndexBreaksThem) {
+  // Open floor around a wall, no repulsion (every step weight 1), and goals at equal seed costs
+  // placed symmetrically: many cells are reached at equal costs from two sides, and the one
+  // that leaves the queue first becomes their parent. The reference is Dijkstra's algorithm on a
+  // std::priority_queue of (cost, index) pairs with stale entries skipped.
+  TestGrid cells(40, 30);
+  cells.free(0, 0, 39, 29).occupied(19, 8, 20, 21);
+  const NavigationGrid grid(cells.grid(), {}, NavigationGridOptions{});
+  CostToGoField field(grid, plainOptions(0.15));
+  const std::vector<GoalCell> goals = {GoalCell{5, 5, 0.0, 0}, GoalCell{34, 5, 0.0, 1}, GoalCell{5, 24, 0.0, 2},
+                                       GoalCell{34, 24, 0.0, 3}, GoalCell{12, 15, 0.3, 4}, GoalCell{27, 15, 0.3, 5}};
+  field.compute(goals);
+
+  const cv::Rect box = grid.freeCells();
+  const auto indexOf = [&](int col, int row) { return (row - box.y) * box.width + col - box.x; };
+  std::vector<double> cost(static_cast<size_t>(box.area()), std::numeric_limits<double>::infinity());
+  std::vector<int> parent(cost.size(), -1), label(cost.size(), -1);
+  using Entry = std::pair<double, int>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open;
+  for (const GoalCell& goal : goals) {
+    const int index = indexOf(goal.col, goal.row);
+    cost[index] = goal.seed_cost;
+    parent[index] = index;
+    label[index] = goal.label;
+    open.push({goal.seed_cost, index});
+  }
+  const double lengths[2] = {0.1, M_SQRT2 * 0.1};
+  int ties = 0;
+  while (!open.empty()) {
+    const auto [here, index] = open.top();
+    open.pop();
+    if (here != cost[index]) continue;
+    const int col = box.x + index % box.width, row = box.y + index / box.width;
+    for (int dr = -1; dr <= 1; ++dr) {
+      for (int dc = -1; dc <= 1; ++dc) {
+        const int c = col + dc, r = row + dr;
+        if ((dr == 0 && dc == 0) || !field.traversable(c, r)) continue;
+        if (dr != 0 && dc != 0 && (!field.traversable(col + dc, row) || !field.traversable(col, row + dr))) continue;
+        const double next = here + lengths[dr != 0 && dc != 0] * 0.5 * (1.0f + 1.0f);
+        const int next_index = indexOf(c, r);
+        if (next < cost[next_index]) {
+          cost[next_index] = next;
+          parent[next_index] = index;
+          label[next_index] = label[index];
+          open.push({next, next_index});
+        } else if (next == cost[next_index] && parent[next_index] != index) {
+          ++ties;  // reached as cheaply again: the parent is whichever cell left first
+        }
+      }
+    }
+  }
+  for (int row = box.y; row < box.y + box.height; ++row) {
+    for (int col = box.x; col < box.x + box.width; ++col) {
+      const int index = indexOf(col, row);
+      ASSERT_EQ(field.reachable(col, row), parent[index] >= 0) << col << ", " << row;
+      if (parent[index] < 0) continue;
+      EXPECT_EQ(field.cost(col, row), cost[index]) << col << ", " << row;
+      EXPECT_EQ(field.label(col, row), label[index]) << col << ", " << row;
+      const std::vector<cv::Point> path = field.pathFrom(col, row);
+      const cv::Point next = path.size() > 1 ? path[1] : path[0];
+      EXPECT_EQ(indexOf(next.x, next.y), parent[index]) << col << ", " << row;
+    }
+  }
+  EXPECT_GT(ties, 0);
 }
 
 TEST(CostToGoFieldTest, MatchesRelaxationToAFixedPointOnAClutteredFloorWithRepulsion) {
