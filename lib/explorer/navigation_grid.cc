@@ -28,8 +28,7 @@ cv::Mat1f distanceToBlocked(const cv::Mat1b& classes, uint8_t clear_below, const
 // `box` grown by `cells` on every side, within a grid of `size`; empty if `box` is.
 cv::Rect grownInside(const cv::Rect& box, int cells, const cv::Size& size) {
   if (box.empty()) return cv::Rect();
-  return cv::Rect(box.x - cells, box.y - cells, box.width + 2 * cells, box.height + 2 * cells) &
-         cv::Rect(cv::Point(), size);
+  return (box - cv::Point(cells, cells) + cv::Size(2 * cells, 2 * cells)) & cv::Rect(cv::Point(), size);
 }
 
 }  // namespace
