@@ -83,6 +83,9 @@ struct PreparedFrame {
   bool scanline = false;     // the horizontal paths, with their jump costs per window pixel and camera
   bool paths_from_above = false;  // CostAggregation::kSemiGlobal: also the three paths from the row above
   double scanline_p1 = 0, scanline_p2 = 0;
+  // The scanline's paths in bytes, from the window scores divided by 2^path_shift (see
+  // scanlinePathShift); -1: paths in the scores' own width.
+  int path_shift = -1;
   // Binocular horizontal rig with the left-right check: +1 if candidate d of pixel x is pixel
   // x - d of the secondary image, -1 if x + d; 0 = no reverse match (SadMatch::reverse_disparity).
   int reverse_sign = 0;
@@ -99,11 +102,12 @@ struct MatchRegion {
 // 16-bit scores (when the largest possible score fits) or 32-bit ones. Candidate disparities are
 // padded to a multiple of byte_lanes, the candidates of one 8-bit vector.
 // The semi-global paths from above are built separately: the other loops run as tight as
-// without them.
+// without them. So is the scanline with byte paths (16-bit window scores, path_shift >= 0).
 struct SadKernel {
   using Match = void (*)(const PreparedFrame& frame, const MatchRegion& region, SadMatch& out);
   int byte_lanes;
   Match match[2][2];  // [32-bit scores][paths from above]
+  Match match_byte_paths;
 };
 
 const SadKernel& sse2SadKernel();

@@ -54,8 +54,36 @@ struct AccumulatorLanes<int16_t> {
   static cv::v_int32 widenSum(const Vec& v) { return cv::v_dotprod(v, cv::vx_setall_s16(1)); }
   static Vec all(int value) { return cv::vx_setall_s16(static_cast<short>(value)); }
   // Sign bits of a's lanes then b's (lanes of comparison masks are 0 or -1).
-  static unsigned packedSignMask(const Vec& a, const Vec& b) {
+  static uint64_t packedSignMask(const Vec& a, const Vec& b) {
     return static_cast<unsigned>(cv::v_signmask(cv::v_pack(a, b)));
+  }
+};
+
+// The sum of each group of 8 bytes of `v` in a 64-bit lane (psadbw against zero), as 32-bit lanes.
+CV_ALWAYS_INLINE cv::v_int32x4 byteGroupSums(const cv::v_uint8x16& v) {
+  return cv::v_int32x4(_mm_sad_epu8(v.val, _mm_setzero_si128()));
+}
+#if CV_SIMD256
+CV_ALWAYS_INLINE cv::v_int32x8 byteGroupSums(const cv::v_uint8x32& v) {
+  return cv::v_int32x8(_mm256_sad_epu8(v.val, _mm256_setzero_si256()));
+}
+#endif
+
+// Scanline paths in bytes (PreparedFrame::path_shift): twice the candidates of 16-bit lanes per
+// instruction. OpenCV's 8-bit + and - saturate, so a path that reaches 255 stays there instead of
+// wrapping; the window scores are scaled so that only candidates far worse than any that can win
+// saturate.
+template <>
+struct AccumulatorLanes<uint8_t> {
+  using Vec = cv::v_uint8;
+  static constexpr int kCount = Vec::nlanes;
+  static Vec add(const Vec& a, const Vec& b) { return a + b; }
+  static Vec subtract(const Vec& a, const Vec& b) { return a - b; }
+  static cv::v_int32 widenSum(const Vec& v) { return byteGroupSums(v); }
+  static Vec all(int value) { return cv::vx_setall_u8(static_cast<uchar>(value)); }
+  static uint64_t packedSignMask(const Vec& a, const Vec& b) {
+    return static_cast<uint32_t>(cv::v_signmask(a)) |
+           static_cast<uint64_t>(static_cast<uint32_t>(cv::v_signmask(b))) << kCount;
   }
 };
 
@@ -76,7 +104,7 @@ struct AccumulatorLanes<int32_t> {
   static Vec slide(const Vec& sum, const Vec& entering, const Vec& leaving) { return sum + entering - leaving; }
   static cv::v_int32 widenSum(const Vec& v) { return v; }
   static Vec all(int value) { return cv::vx_setall_s32(value); }
-  static unsigned packedSignMask(const Vec& a, const Vec& b) {
+  static uint64_t packedSignMask(const Vec& a, const Vec& b) {
     return static_cast<unsigned>(cv::v_signmask(cv::v_pack(a, b)));
   }
 };
@@ -84,7 +112,14 @@ struct AccumulatorLanes<int32_t> {
 // The smallest lane of `v`, in every lane.
 CV_ALWAYS_INLINE cv::v_int16x8 minInEveryLane(const cv::v_int16x8& v) { return cv::v_setall_s16(cv::v_reduce_min(v)); }
 CV_ALWAYS_INLINE cv::v_int32x4 minInEveryLane(const cv::v_int32x4& v) { return cv::v_setall_s32(cv::v_reduce_min(v)); }
+CV_ALWAYS_INLINE cv::v_uint8x16 minInEveryLane(const cv::v_uint8x16& v) { return cv::v_setall_u8(cv::v_reduce_min(v)); }
 #if CV_SIMD256
+CV_ALWAYS_INLINE cv::v_uint8x32 minInEveryLane(const cv::v_uint8x32& v) {
+  // The byte minimum of each 16-bit lane, zero-extended, then phminposuw over the 8 lanes.
+  const __m128i half = _mm_min_epu8(_mm256_castsi256_si128(v.val), _mm256_extracti128_si256(v.val, 1));
+  const __m128i words = _mm_min_epu16(_mm_and_si128(half, _mm_set1_epi16(0xFF)), _mm_srli_epi16(half, 8));
+  return cv::v_uint8x32(_mm256_broadcastb_epi8(_mm_minpos_epu16(words)));
+}
 CV_ALWAYS_INLINE cv::v_int16x16 minInEveryLane(const cv::v_int16x16& v) {
   // The lanes it is used on (scores and paths) are never negative, so their unsigned minimum is
   // the minimum, which phminposuw finds among 8 lanes in one instruction.
@@ -123,19 +158,27 @@ CV_ALWAYS_INLINE int firstLaneEqual(const Acc* scores, int chunks, const typenam
       const Acc* first = scores + (block + chunk) * Lanes::kCount;
       const typename Lanes::Vec a = cv::vx_load(first) == wanted;
       const typename Lanes::Vec b = chunk + 1 < block_chunks ? cv::vx_load(first + Lanes::kCount) == wanted : Lanes::all(0);
-      hits |= static_cast<uint64_t>(Lanes::packedSignMask(a, b)) << (chunk * Lanes::kCount);
+      hits |= Lanes::packedSignMask(a, b) << (chunk * Lanes::kCount);
     }
     if (hits) return block * Lanes::kCount + __builtin_ctzll(hits);
   }
   return 0;
 }
 
-template <typename Acc, bool kPathsFromAbove>
+template <typename Acc, bool kPathsFromAbove, bool kBytePaths>
 void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch& out) {
+  static_assert(!kBytePaths || (std::is_same_v<Acc, int16_t> && !kPathsFromAbove),
+                "byte paths take 16-bit window scores, and only the two horizontal paths");
   using Lanes = AccumulatorLanes<Acc>;
   using Vec = typename Lanes::Vec;
+  // What the winner is taken from: the window scores, or the scanline's paths and their sums, which
+  // are bytes with kBytePaths.
+  using PathAcc = std::conditional_t<kBytePaths, uint8_t, Acc>;
+  using PathLanes = AccumulatorLanes<PathAcc>;
+  using PathVec = typename PathLanes::Vec;
   constexpr int kVectorsPerBytes = kByteLanes / Lanes::kCount;
-  constexpr Acc kMaxScore = std::numeric_limits<Acc>::max();
+  constexpr int kPathVectorsPerBytes = kByteLanes / PathLanes::kCount;
+  constexpr PathAcc kMaxScore = std::numeric_limits<PathAcc>::max();
 
   const int r = frame.radius, window = 2 * r + 1, margin = frame.margin;
   const int disparities = frame.disparities, padded = frame.padded_disparities;
@@ -149,8 +192,8 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
 
   thread_local std::vector<Acc> column_sum_buffer, score_buffer, combined_buffer;
   thread_local std::vector<uchar> ring_buffer, table_buffer;
-  thread_local std::vector<Acc> reverse_score_buffer, reverse_index_buffer;
-  thread_local std::vector<Acc> row_cost_buffer, forward_path_buffer, backward_path_buffer;
+  thread_local std::vector<PathAcc> reverse_score_buffer, reverse_index_buffer;
+  thread_local std::vector<PathAcc> row_cost_buffer, forward_path_buffer, backward_path_buffer, path_sum_buffer;
   // The ring keeps each row's costs until they leave the window: as bytes when a group's costs
   // add up within a byte (x-Sobel and up to four cameras, or any single camera), which halves
   // its memory traffic, else as scores.
@@ -165,13 +208,14 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
   std::fill(column_sums, column_sums + groups * column_stride, Acc{0});
   Acc* const scores = scratch(score_buffer, static_cast<size_t>(groups) * padded);
   Acc* const combined = scratch(combined_buffer, padded);
-  // Scanline: the scores of every pixel of a row, the paths from the left, and the last two of
-  // the path from the right.
+  // Scanline: the scores of every pixel of a row, the paths from the left, the last two of the
+  // path from the right, and the sum of the paths at one pixel.
   const size_t row_pixels = frame.scanline ? static_cast<size_t>(region.x1 - region.x0) : 0;
   const size_t path_stride = static_cast<size_t>(padded);
-  Acc* const row_costs = scratch(row_cost_buffer, row_pixels * padded);
-  Acc* const forward_paths = scratch(forward_path_buffer, row_pixels * path_stride);
-  Acc* const backward_paths = scratch(backward_path_buffer, 2 * path_stride);
+  PathAcc* const row_costs = scratch(row_cost_buffer, row_pixels * padded);
+  PathAcc* const forward_paths = scratch(forward_path_buffer, row_pixels * path_stride);
+  PathAcc* const backward_paths = scratch(backward_path_buffer, 2 * path_stride);
+  PathAcc* const path_sums = scratch(path_sum_buffer, path_stride);
   // A tabulated camera's candidates in each channel, and with Birchfield-Tomasi their sampling
   // intervals' too.
   const int channels = static_cast<int>(frame.reference.size());
@@ -182,31 +226,35 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
   // upper right) to every pixel of this row and of the previous one, and each path's lowest entry.
   constexpr int kDirectionsFromAbove = 3;
   const size_t above_pixels = kPathsFromAbove ? row_pixels : 0;
-  thread_local std::vector<Acc> above_path_buffer, above_lowest_buffer;
-  Acc* const above_paths = scratch(above_path_buffer, 2 * kDirectionsFromAbove * above_pixels * path_stride);
-  Acc* const above_lowest = scratch(above_lowest_buffer, 2 * kDirectionsFromAbove * above_pixels);
+  thread_local std::vector<PathAcc> above_path_buffer, above_lowest_buffer;
+  PathAcc* const above_paths = scratch(above_path_buffer, 2 * kDirectionsFromAbove * above_pixels * path_stride);
+  PathAcc* const above_lowest = scratch(above_lowest_buffer, 2 * kDirectionsFromAbove * above_pixels);
   // Index of pixel i's path from `direction` (0: upper left, 1: above, 2: upper right) in row y.
   const auto aboveIndex = [&](int y, int direction, size_t i) {
     return (static_cast<size_t>(y % 2) * kDirectionsFromAbove + direction) * above_pixels + i;
   };
 
-  const int chunks = padded / Lanes::kCount;
-  const int whole_chunks = disparities / Lanes::kCount;  // chunks without padding lanes
+  const int score_chunks = padded / Lanes::kCount;
+  // Chunks of what the winner is taken from; the first whole_chunks hold no padding lanes.
+  const int chunks = padded / PathLanes::kCount;
+  const int whole_chunks = disparities / PathLanes::kCount;
   // Only the chunks of the last byte vector can hold padding lanes: there, kMaxScore.
-  Vec padding[kVectorsPerBytes];
-  Acc first_lanes[Lanes::kCount];
-  for (int lane = 0; lane < Lanes::kCount; ++lane) first_lanes[lane] = static_cast<Acc>(lane);
-  const Vec lane_index = cv::vx_load(first_lanes);
+  PathVec padding[kPathVectorsPerBytes];
+  PathAcc first_lanes[PathLanes::kCount];
+  for (int lane = 0; lane < PathLanes::kCount; ++lane) first_lanes[lane] = static_cast<PathAcc>(lane);
+  const PathVec lane_index = cv::vx_load(first_lanes), one = PathLanes::all(1);
   // Reverse match: entry p of a row holds the best score so far of secondary pixel
   // x1 - 1 - min_d - p (reverse_sign +1) or x0 + min_d + p (-1), and its candidate index; candidate
   // j of reference pixel x is entry reverse_first(x) + j, so a pixel's candidates are contiguous.
   const int reverse_sign = frame.reverse_sign;
   const size_t reverse_size = reverse_sign ? static_cast<size_t>(region.x1 - region.x0 + padded) : 0;
-  Acc* const reverse_scores = scratch(reverse_score_buffer, reverse_size);
-  Acc* const reverse_indices = scratch(reverse_index_buffer, reverse_size);
+  PathAcc* const reverse_scores = scratch(reverse_score_buffer, reverse_size);
+  PathAcc* const reverse_indices = scratch(reverse_index_buffer, reverse_size);
   for (int chunk = whole_chunks; chunk < chunks; ++chunk) {
-    Acc pad[Lanes::kCount];
-    for (int lane = 0; lane < Lanes::kCount; ++lane) pad[lane] = chunk * Lanes::kCount + lane < disparities ? 0 : kMaxScore;
+    PathAcc pad[PathLanes::kCount];
+    for (int lane = 0; lane < PathLanes::kCount; ++lane) {
+      pad[lane] = chunk * PathLanes::kCount + lane < disparities ? 0 : kMaxScore;
+    }
     padding[chunk - whole_chunks] = cv::vx_load(pad);
   }
 
@@ -376,71 +424,81 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
   // Winner-takes-all over the scores `curve` of reference pixel x of row y (kept lanes of the padded
   // candidates), the sum of scores, the runner-up, and the reverse match's best-so-far entries.
   const bool subpixel = frame.subpixel, second_best = frame.second_best, sum_scores = frame.sum_scores;
+  // The output rows of the row being matched (matchRow sets them).
+  float* disparity_row = nullptr;
+  int *best_score_row = nullptr, *score_sum_row = nullptr, *second_score_row = nullptr;
   const int min_disparity = frame.min_disparity;
   const int chunk_count = chunks, unpadded_chunks = whole_chunks;
   // `descending`: the pixels of the row come in order of decreasing x.
-  const auto decide = [&](int y, int x, const Acc* curve, bool descending) __attribute__((always_inline)) {
+  const auto decide = [&](int x, const PathAcc* curve, bool descending) __attribute__((always_inline)) {
     const int reverse_first = reverse_sign > 0 ? region.x1 - 1 - x : x - region.x0;
-    Vec candidate_index = lane_index;
-    Vec best = Lanes::all(kMaxScore);
+    PathVec candidate_index = lane_index;
+    PathVec best = PathLanes::all(kMaxScore);
     cv::v_int32 score_sum = cv::vx_setall_s32(0);
     for (int chunk = 0; chunk < chunk_count; ++chunk) {
-      const int b = chunk * Lanes::kCount;
-      Vec score = cv::vx_load(curve + b);
+      const int b = chunk * PathLanes::kCount;
+      PathVec score = cv::vx_load(curve + b);
       if (chunk >= unpadded_chunks) {
-        // Scores are never negative: OR with the all-ones-but-sign padding makes those lanes
-        // the largest score, AND with its complement makes them zero.
-        const Vec& pad = padding[chunk - unpadded_chunks];
-        if (sum_scores) score_sum += Lanes::widenSum(score & ~pad);
+        // Scores are never negative: OR with the padding (the largest score in its lanes: all
+        // ones but the sign for 16 and 32 bits, all ones for bytes) makes those lanes the
+        // largest score, AND with its complement makes them zero.
+        const PathVec& pad = padding[chunk - unpadded_chunks];
+        if (sum_scores) score_sum += PathLanes::widenSum(score & ~pad);
         score = score | pad;
       } else if (sum_scores) {
-        score_sum += Lanes::widenSum(score);
+        score_sum += PathLanes::widenSum(score);
       }
       best = cv::v_min(best, score);
       if (reverse_sign) {
         // With x increasing, candidates reach a secondary pixel in order of increasing disparity
         // for sign +1, so a strict < keeps the smallest of tied ones; for -1, or x decreasing, <=.
-        Acc* const entry_scores = reverse_scores + reverse_first + b;
-        Acc* const entry_indices = reverse_indices + reverse_first + b;
-        const Vec previous = cv::vx_load(entry_scores);
-        const Vec better = (reverse_sign > 0) != descending ? score < previous : score <= previous;
-        cv::v_store(entry_scores, cv::v_min(previous, score));
-        cv::v_store(entry_indices, cv::v_select(better, candidate_index, cv::vx_load(entry_indices)));
-        candidate_index = Lanes::add(candidate_index, Lanes::all(Lanes::kCount));
+        PathAcc* const entry_scores = reverse_scores + reverse_first + b;
+        PathAcc* const entry_indices = reverse_indices + reverse_first + b;
+        const PathVec previous = cv::vx_load(entry_scores), lowest = cv::v_min(previous, score);
+        const PathVec previous_indices = cv::vx_load(entry_indices);
+        cv::v_store(entry_scores, lowest);
+        // Equality tests rather than < and <=, which byte lanes (unsigned) would emulate.
+        cv::v_store(entry_indices, (reverse_sign > 0) != descending
+                                       ? cv::v_select(lowest == previous, previous_indices, candidate_index)
+                                       : cv::v_select(lowest == score, candidate_index, previous_indices));
+        candidate_index = PathLanes::add(candidate_index, PathLanes::all(PathLanes::kCount));
       }
     }
     // The lowest score, then the first (smallest) disparity that has it: the lanes equal to it
     // as a bit mask, 64 candidates at a time, without data-dependent branches inside a block.
-    const Vec best_all = minInEveryLane(best);
-    const Acc best_score = static_cast<Acc>(cv::v_extract_n<0>(best_all));
-    const int j = firstLaneEqual<Lanes>(curve, chunk_count, best_all);
+    const PathVec best_all = minInEveryLane(best);
+    const PathAcc best_score = static_cast<PathAcc>(cv::v_extract_n<0>(best_all));
+    const int j = firstLaneEqual<PathLanes>(curve, chunk_count, best_all);
     float disparity = static_cast<float>(min_disparity + j);
     if (subpixel && j > 0 && j < disparities - 1) {
       const double before = curve[j - 1], after = curve[j + 1];
       const double curvature = before + after - 2.0 * best_score;
       if (curvature > 0) disparity += static_cast<float>(0.5 * (before - after) / curvature);
     }
-    out.disparity(y, x) = disparity;
-    out.best_score(y, x) = static_cast<int>(best_score);
+    disparity_row[x] = disparity;
+    best_score_row[x] = static_cast<int>(best_score);
     // Zero when the quality-of-match test is off (SadMatch), without a reduction per pixel.
-    out.score_sum(y, x) = sum_scores ? cv::v_reduce_sum(score_sum) : 0;
+    score_sum_row[x] = sum_scores ? cv::v_reduce_sum(score_sum) : 0;
     if (second_best) {
-      // The lowest score with the best and its two neighbours (and the padding) masked out;
-      // only the chunks holding those neighbours need the mask.
-      const int near_first = std::max(j - 1, 0) / Lanes::kCount, near_last = (j + 1) / Lanes::kCount;
-      const Vec low = Lanes::all(j - 1), high = Lanes::all(j + 1), highest = Lanes::all(kMaxScore);
-      Vec runner_up = highest;
+      // The lowest score with the best and its two neighbours (and the padding) masked out, at
+      // every chunk: a branch on which chunks hold them would follow the data and mispredict.
+      // Equality tests work alike for every lane type. Byte lanes saturate, so `low` and `high`
+      // stay the best itself at 0 and 255 (there are at most 256 candidates).
+      const PathVec best_index = PathLanes::all(j), highest = PathLanes::all(kMaxScore);
+      const PathVec low = PathLanes::subtract(best_index, one), high = PathLanes::add(best_index, one);
+      PathVec index = lane_index, runner_up = highest;
       for (int chunk = 0; chunk < chunk_count; ++chunk) {
-        Vec score = cv::vx_load(curve + chunk * Lanes::kCount);
+        PathVec score = cv::vx_load(curve + chunk * PathLanes::kCount);
         if (chunk >= unpadded_chunks) score = score | padding[chunk - unpadded_chunks];
-        if (chunk >= near_first && chunk <= near_last) {
-          const Vec index = Lanes::add(lane_index, Lanes::all(chunk * Lanes::kCount));
-          score = cv::v_select((index >= low) & (index <= high), highest, score);
-        }
+        score = cv::v_select((index == low) | (index == best_index) | (index == high), highest, score);
         runner_up = cv::v_min(runner_up, score);
+        index = PathLanes::add(index, PathLanes::all(PathLanes::kCount));
       }
-      const Acc second = static_cast<Acc>(cv::v_extract_n<0>(minInEveryLane(runner_up)));
-      out.second_score(y, x) = second == kMaxScore ? std::numeric_limits<int>::max() : static_cast<int>(second);
+      // A byte path's score can be 255 itself (saturated), so whether there is a runner-up is
+      // told by the candidates' count.
+      const bool has_runner_up = j >= 2 || j + 2 < disparities;
+      second_score_row[x] = has_runner_up ? static_cast<int>(cv::v_extract_n<0>(minInEveryLane(runner_up)))
+                                          : std::numeric_limits<int>::max();
     }
   };
 
@@ -449,41 +507,44 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
   // - min previous (Hirschmuller 2008, eq. 13; subtracting the minimum keeps it bounded by the
   // largest score + p2).
   const bool scanline = frame.scanline;
-  const int scale = window * window * (groups == 1 ? cameras : kept);
-  const Vec small_jump = Lanes::all(static_cast<int>(std::lround(frame.scanline_p1 * scale)));
-  const Vec large_jump = Lanes::all(static_cast<int>(std::lround(frame.scanline_p2 * scale)));
+  // Byte paths: the window scores and the jump costs divided by 2^path_shift.
+  const int path_shift = kBytePaths ? frame.path_shift : 0;
+  const double jump_scale = std::ldexp(window * window * (groups == 1 ? cameras : kept), -path_shift);
+  const PathVec small_jump = PathLanes::all(static_cast<int>(std::lround(frame.scanline_p1 * jump_scale)));
+  const PathVec large_jump = PathLanes::all(static_cast<int>(std::lround(frame.scanline_p2 * jump_scale)));
   // Padding lanes of a path hold the largest score, so that no real candidate is reached through
   // them. Their sums may wrap to negative values, which the OR with `padding` alone would keep
   // negative: `real_lanes` (all ones in the lanes of real candidates) clears them first.
-  Vec real_lanes[kVectorsPerBytes];
-  for (int k = 0; k < chunk_count - unpadded_chunks; ++k) real_lanes[k] = padding[k] == Lanes::all(0);
-  const auto padded_lanes = [&](const Vec& value, int chunk) {
+  PathVec real_lanes[kPathVectorsPerBytes];
+  for (int k = 0; k < chunk_count - unpadded_chunks; ++k) real_lanes[k] = padding[k] == PathLanes::all(0);
+  const auto padded_lanes = [&](const PathVec& value, int chunk) {
     if (chunk < unpadded_chunks) return value;
-    const Vec& pad = padding[chunk - unpadded_chunks];
+    const PathVec& pad = padding[chunk - unpadded_chunks];
     return (value & real_lanes[chunk - unpadded_chunks]) | pad;
   };
   // Writes the path reaching a pixel of scores `cost` from its neighbour's path `previous`, whose
   // lowest entry is in every lane of `lowest_all` (none for the first pixel), and returns the new
   // path's lowest entry the same way: that minimum is the step from pixel to pixel that nothing
   // can overlap, so it stays in a vector register.
-  const auto followPath = [&](const Acc* cost, const Acc* previous, const Vec& lowest_all, Acc* path) {
-    const Vec jump_floor = Lanes::add(lowest_all, large_jump);
-    const Vec beyond = Lanes::all(kMaxScore);  // the neighbours of the first and last candidates
-    Vec new_lowest = Lanes::all(kMaxScore);
+  const auto followPath = [&](const PathAcc* cost, const PathAcc* previous, const PathVec& lowest_all,
+                              PathAcc* path) {
+    const PathVec jump_floor = PathLanes::add(lowest_all, large_jump);
+    const PathVec beyond = PathLanes::all(kMaxScore);  // the neighbours of the first and last candidates
+    PathVec new_lowest = PathLanes::all(kMaxScore);
     // The neighbouring candidates come from whole vectors of `previous`: loading them one lane off
     // the vectors just stored would wait for those stores to reach the cache, at every pixel.
-    Vec below = beyond, here = previous ? cv::vx_load(previous) : beyond;
+    PathVec below = beyond, here = previous ? cv::vx_load(previous) : beyond;
     for (int chunk = 0; chunk < chunk_count; ++chunk) {
-      const int b = chunk * Lanes::kCount;
-      Vec value = cv::vx_load(cost + b);
+      const int b = chunk * PathLanes::kCount;
+      PathVec value = cv::vx_load(cost + b);
       if (previous) {
-        const Vec above = chunk + 1 < chunk_count ? cv::vx_load(previous + b + Lanes::kCount) : beyond;
-        const Vec neighbours =
-            cv::v_min(cv::v_extract<Lanes::kCount - 1>(below, here), cv::v_extract<1>(here, above));
-        const Vec reach = cv::v_min(cv::v_min(here, Lanes::add(neighbours, small_jump)), jump_floor);
+        const PathVec above = chunk + 1 < chunk_count ? cv::vx_load(previous + b + PathLanes::kCount) : beyond;
+        const PathVec neighbours =
+            cv::v_min(cv::v_extract<PathLanes::kCount - 1>(below, here), cv::v_extract<1>(here, above));
+        const PathVec reach = cv::v_min(cv::v_min(here, PathLanes::add(neighbours, small_jump)), jump_floor);
         below = here;
         here = above;
-        value = Lanes::add(value, Lanes::subtract(reach, lowest_all));
+        value = PathLanes::add(value, PathLanes::subtract(reach, lowest_all));
       }
       value = padded_lanes(value, chunk);
       new_lowest = cv::v_min(new_lowest, value);
@@ -496,6 +557,10 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
   // of row y; the winner is taken at once, or after the scanline paths over the whole row.
   const auto matchRow = [&](int y, auto combine_groups) {
     constexpr bool kCombine = decltype(combine_groups)::value;
+    disparity_row = out.disparity.ptr<float>(y);
+    best_score_row = out.best_score.ptr<int>(y);
+    score_sum_row = out.score_sum.ptr<int>(y);
+    second_score_row = second_best ? out.second_score.ptr<int>(y) : nullptr;
     for (int g = 0; g < groups; ++g) {
       // The window of the first pixel minus its last column, which the first slide brings in.
       const Acc* sums = column_sums + g * column_stride;
@@ -513,28 +578,22 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
     const size_t stride = column_stride;
     const int count = padded;
     Vec sorted[kMaxCameras];
-    Vec forward_lowest = Lanes::all(0);
+    PathVec forward_lowest = PathLanes::all(0);
     if (reverse_sign) std::fill(reverse_scores, reverse_scores + reverse_size, kMaxScore);
     for (int x = region.x0; x < region.x1; ++x) {
       // Columns entering and leaving the window, relative to each group's column sums.
       const size_t entering = static_cast<size_t>(x - x0 + 2 * r + 1) * count;
       const size_t leaving = static_cast<size_t>(x - x0) * count;
-      // The pixel's combined scores: in the group scores themselves for one group, else in a
-      // buffer of their own; for the scanline, in the row's costs.
-      Acc* const pixel_costs = scanline ? row_costs + static_cast<size_t>(x - region.x0) * count
-                                        : (kCombine ? combined : group_scores);
-      // One group: the window slides from the previous pixel's scores, which the scanline keeps
-      // in the row's costs (so they are stored once).
-      const Acc* const sliding = x > region.x0 ? pixel_costs - count : group_scores;
-      for (int chunk = 0; chunk < chunk_count; ++chunk) {
-        const int b = chunk * Lanes::kCount;
+      const size_t i = static_cast<size_t>(x - region.x0);
+      // The pixel's window scores of candidates b.., slid from the previous pixel's at `from`, written
+      // to `to`; with several groups, the sum of the `kept` lowest group scores (each group's own
+      // scores slide in place).
+      const auto windowScores = [&](int b, const Acc* from, Acc* to) __attribute__((always_inline)) {
         if constexpr (!kCombine) {
-          const Vec entering_sums = cv::vx_load(all_sums + b + entering), leaving_sums = cv::vx_load(all_sums + b + leaving);
-          if (scanline) {
-            cv::v_store(pixel_costs + b, Lanes::slide(cv::vx_load(sliding + b), entering_sums, leaving_sums));
-          } else {
-            cv::v_store(group_scores + b, Lanes::slide(cv::vx_load(group_scores + b), entering_sums, leaving_sums));
-          }
+          const Vec value =
+              Lanes::slide(cv::vx_load(from + b), cv::vx_load(all_sums + b + entering), cv::vx_load(all_sums + b + leaving));
+          cv::v_store(to + b, value);
+          return value;
         } else {
           for (int g = 0; g < groups; ++g) {
             Acc* const group_score = group_scores + g * count + b;
@@ -551,48 +610,69 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
           }
           Vec score = sorted[0];
           for (int k = 1; k < kept; ++k) score = Lanes::add(score, sorted[k]);
-          cv::v_store(pixel_costs + b, score);
+          cv::v_store(to + b, score);
+          return score;
         }
-      }
-      if (!scanline) {
-        decide(y, x, pixel_costs, false);
-      } else {
-        // The path from the left, in the same sweep as the window scores.
-        const size_t i = static_cast<size_t>(x - region.x0);
+      };
+      if constexpr (kBytePaths) {
+        // The window scores slide in place (the best half's sums go to `combined`, unread); the
+        // row's costs are those scores divided by 2^path_shift, as bytes (saturated at 255).
+        PathAcc* const pixel_costs = row_costs + i * count;
+        Acc* const window_scores = kCombine ? combined : group_scores;
+        for (int b = 0; b < count; b += kByteLanes) {
+          const Vec low = windowScores(b, group_scores, window_scores);
+          const Vec high = windowScores(b + Lanes::kCount, group_scores, window_scores);
+          cv::v_store(pixel_costs + b, cv::v_pack_u(low >> path_shift, high >> path_shift));
+        }
         forward_lowest = followPath(pixel_costs, i == 0 ? nullptr : forward_paths + (i - 1) * path_stride,
                                     forward_lowest, forward_paths + i * path_stride);
-        for (int direction = 0; direction < kDirectionsFromAbove && kPathsFromAbove; ++direction) {
-          const ptrdiff_t from = static_cast<ptrdiff_t>(i) + direction - 1;
-          const bool starts = y == region.y0 || from < 0 || from >= static_cast<ptrdiff_t>(row_pixels);
-          const size_t previous = starts ? 0 : aboveIndex(y - 1, direction, static_cast<size_t>(from));
-          const size_t current = aboveIndex(y, direction, i);
-          above_lowest[current] = cv::v_extract_n<0>(followPath(
-              pixel_costs, starts ? nullptr : above_paths + previous * path_stride,
-              Lanes::all(starts ? 0 : above_lowest[previous]), above_paths + current * path_stride));
+      } else {
+        // The pixel's combined scores: in the group scores themselves for one group, else in a
+        // buffer of their own; for the scanline, in the row's costs.
+        Acc* const pixel_costs = scanline ? row_costs + i * count : (kCombine ? combined : group_scores);
+        // One group: with the scanline the window slides from the previous pixel's scores in the
+        // row's costs (so they are stored once), else in place.
+        const Acc* const sliding = scanline && x > region.x0 ? pixel_costs - count : group_scores;
+        for (int chunk = 0; chunk < score_chunks; ++chunk) windowScores(chunk * Lanes::kCount, sliding, pixel_costs);
+        if (!scanline) {
+          decide(x, pixel_costs, false);
+        } else {
+          // The path from the left, in the same sweep as the window scores.
+          forward_lowest = followPath(pixel_costs, i == 0 ? nullptr : forward_paths + (i - 1) * path_stride,
+                                      forward_lowest, forward_paths + i * path_stride);
+          for (int direction = 0; direction < kDirectionsFromAbove && kPathsFromAbove; ++direction) {
+            const ptrdiff_t from = static_cast<ptrdiff_t>(i) + direction - 1;
+            const bool starts = y == region.y0 || from < 0 || from >= static_cast<ptrdiff_t>(row_pixels);
+            const size_t previous = starts ? 0 : aboveIndex(y - 1, direction, static_cast<size_t>(from));
+            const size_t current = aboveIndex(y, direction, i);
+            above_lowest[current] = cv::v_extract_n<0>(followPath(
+                pixel_costs, starts ? nullptr : above_paths + previous * path_stride,
+                PathLanes::all(starts ? 0 : above_lowest[previous]), above_paths + current * path_stride));
+          }
         }
       }
     }
     if (!scanline) return;
     // The path from the right, added to the one from the left, gives the aggregated scores; the
     // winner is taken in the same sweep.
-    Vec backward_lowest = Lanes::all(0);
+    PathVec backward_lowest = PathLanes::all(0);
     for (int x = region.x1 - 1; x >= region.x0; --x) {
       const size_t i = static_cast<size_t>(x - region.x0);
       const bool first = x == region.x1 - 1;
-      Acc* const path = backward_paths + (i % 2) * path_stride;
-      const Acc* const previous = first ? nullptr : backward_paths + ((i + 1) % 2) * path_stride;
+      PathAcc* const path = backward_paths + (i % 2) * path_stride;
+      const PathAcc* const previous = first ? nullptr : backward_paths + ((i + 1) % 2) * path_stride;
       backward_lowest = followPath(row_costs + i * padded, previous, backward_lowest, path);
-      const Acc* const forward = forward_paths + i * path_stride;
+      const PathAcc* const forward = forward_paths + i * path_stride;
       for (int chunk = 0; chunk < chunk_count; ++chunk) {
-        const int b = chunk * Lanes::kCount;
-        Vec sum = Lanes::add(cv::vx_load(forward + b), cv::vx_load(path + b));
+        const int b = chunk * PathLanes::kCount;
+        PathVec sum = PathLanes::add(cv::vx_load(forward + b), cv::vx_load(path + b));
         for (int direction = 0; direction < kDirectionsFromAbove && kPathsFromAbove; ++direction) {
-          sum = Lanes::add(sum, cv::vx_load(above_paths + aboveIndex(y, direction, i) * path_stride + b));
+          sum = PathLanes::add(sum, cv::vx_load(above_paths + aboveIndex(y, direction, i) * path_stride + b));
         }
         // Padding lanes (the largest score, added up and wrapped) become zero; decide() pads them again.
-        cv::v_store(combined + b, chunk < unpadded_chunks ? sum : sum & real_lanes[chunk - unpadded_chunks]);
+        cv::v_store(path_sums + b, chunk < unpadded_chunks ? sum : sum & real_lanes[chunk - unpadded_chunks]);
       }
-      decide(y, x, combined, true);
+      decide(x, path_sums, true);
     }
   };
 
@@ -623,8 +703,9 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
 // This build's kernel.
 inline SadKernel makeSadKernel() {
   return SadKernel{kByteLanes,
-                   {{&matchRegion<int16_t, false>, &matchRegion<int16_t, true>},
-                    {&matchRegion<int32_t, false>, &matchRegion<int32_t, true>}}};
+                   {{&matchRegion<int16_t, false, false>, &matchRegion<int16_t, true, false>},
+                    {&matchRegion<int32_t, false, false>, &matchRegion<int32_t, true, false>}},
+                   &matchRegion<int16_t, false, true>};
 }
 
 }  // namespace STEREONAV_SAD_KERNEL_NAMESPACE

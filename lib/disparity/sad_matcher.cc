@@ -56,6 +56,16 @@ bool wholePixelStep(double b, int min_d, int max_d, int& step) {
   return true;
 }
 
+// The largest cost of one pixel against one camera, all channels: grey levels at a quarter scale
+// (rounded, 0..64) add at most 64.
+int largestPixelCost(const StereoOptions& options) {
+  return maxPrefilteredDifference(options.prefilter, options.prefilter_cap) + (options.intensity_term ? 64 : 0);
+}
+
+long long largestWindowScore(const StereoOptions& options, int cameras) {
+  return static_cast<long long>(options.window) * options.window * largestPixelCost(options) * cameras;
+}
+
 // Grey level v at a quarter scale, rounded half up: (v + 2) / 4, 0..64.
 const cv::Mat1b& quarterScale() {
   static const cv::Mat1b table = [] {
@@ -273,9 +283,7 @@ void prepareFrame(const StereoFrame& frame, const StereoOptions& options, const 
   prepared.disparities = options.disparityCount();
   prepared.padded_disparities = roundUp(prepared.disparities, kernel.byte_lanes);
   const int channels = options.intensity_term ? 2 : 1;
-  // Grey levels at a quarter scale (rounded, 0..64) add at most 64 to a pixel's cost.
-  prepared.max_difference =
-      maxPrefilteredDifference(options.prefilter, options.prefilter_cap) + (options.intensity_term ? 64 : 0);
+  prepared.max_difference = largestPixelCost(options);
   // Candidates off the image read the replicated border: pixels near the edge with
   // partial_candidates reach up to the last (padding) candidate's offset beyond it.
   double widest_baseline = 0;
@@ -296,6 +304,7 @@ void prepareFrame(const StereoFrame& frame, const StereoOptions& options, const 
   prepared.paths_from_above = options.aggregation == CostAggregation::kSemiGlobal;
   prepared.scanline_p1 = options.scanline_p1;
   prepared.scanline_p2 = options.scanline_p2;
+  prepared.path_shift = scanlinePathShift(options, static_cast<int>(frame.secondaries.size()));
   const auto channelImage = [&](const cv::Mat1b& image, int channel, cv::Mat1b& out) {
     if (channel == 0) {
       prefilterImage(image, options.prefilter, options.prefilter_cap, options.texture_sigma, out);
@@ -428,6 +437,18 @@ SadMatcher::SadMatcher(const StereoOptions& options) : options_(options), worksp
 
 SadMatcher::~SadMatcher() = default;
 
+int scanlinePathShift(const StereoOptions& options, int cameras) {
+  const long long largest_score = largestWindowScore(options, cameras);
+  if (options.aggregation != CostAggregation::kScanline || options.disparityCount() > 256 ||
+      largest_score > std::numeric_limits<int16_t>::max()) {
+    return -1;
+  }
+  int shift = 0;
+  while ((largest_score >> shift) >= 512) ++shift;
+  const double large_jump = std::ldexp(options.scanline_p2 * options.window * options.window * cameras, -shift);
+  return std::lround(large_jump) <= 255 ? shift : -1;
+}
+
 const SadMatch& SadMatcher::match(const StereoFrame& frame) {
   checkStereoFrame(frame);
   if (frame.secondaries.size() > kMaxCameras) {
@@ -444,9 +465,7 @@ const SadMatch& SadMatcher::match(const StereoFrame& frame) {
   resetResult(frame.reference.rows, frame.reference.cols, options, unseen, prepared, match);
 
   const int height = frame.reference.rows;
-  const long long largest_score = static_cast<long long>(options.window) * options.window *
-                                  prepared.max_difference *
-                                  static_cast<long long>(frame.secondaries.size());
+  const long long largest_score = largestWindowScore(options, static_cast<int>(frame.secondaries.size()));
   // With paths, a score is the sum of two (scanline) or five (semi-global) paths, each at most the
   // largest window score plus the large-jump cost.
   const int paths = prepared.paths_from_above ? 5 : prepared.scanline ? 2 : 0;
@@ -464,7 +483,10 @@ const SadMatch& SadMatcher::match(const StereoFrame& frame) {
         region.y0 = std::max(region.y0, top);
         region.y1 = std::min(region.y1, bottom);
         if (region.y0 >= region.y1) continue;
-        kernel.match[narrow ? 0 : 1][prepared.paths_from_above ? 1 : 0](prepared, region, match);
+        const SadKernel::Match match_region = prepared.path_shift >= 0
+                                                  ? kernel.match_byte_paths
+                                                  : kernel.match[narrow ? 0 : 1][prepared.paths_from_above ? 1 : 0];
+        match_region(prepared, region, match);
       }
     }
   };

@@ -445,10 +445,10 @@ TEST(SadMatcherTest, CalibrationRoundingOffAUnitBaselineMatchesTheUnitBaseline) 
 }
 
 // One step of a path (Hirschmuller 2008, eq. 13): the pixel's cost plus the cheapest way to reach
-// each candidate from the path at the neighbour before it, less that path's lowest entry; without
-// a neighbour (`previous` null) the path starts at the pixel.
+// each candidate from the path at the neighbour before it, less that path's lowest entry, at most
+// `cap`; without a neighbour (`previous` null) the path starts at the pixel.
 std::vector<long long> pathStep(const std::vector<long long>& cost, const std::vector<long long>* previous,
-                                long long p1, long long p2) {
+                                long long p1, long long p2, long long cap) {
   if (!previous) return cost;
   const long long lowest = *std::min_element(previous->begin(), previous->end());
   const int candidates = static_cast<int>(cost.size());
@@ -457,7 +457,7 @@ std::vector<long long> pathStep(const std::vector<long long>& cost, const std::v
     long long reach = std::min((*previous)[j], lowest + p2);
     if (j > 0) reach = std::min(reach, (*previous)[j - 1] + p1);
     if (j + 1 < candidates) reach = std::min(reach, (*previous)[j + 1] + p1);
-    result[j] = cost[j] + reach - lowest;
+    result[j] = std::min(cost[j] + reach - lowest, cap);
   }
   return result;
 }
@@ -466,7 +466,9 @@ std::vector<long long> pathStep(const std::vector<long long>& cost, const std::v
 // match region): the window SAD of every candidate (borders replicated, as the engine pads), the
 // paths from the left and from the right along each row and, for the semi-global aggregation, the
 // paths from the upper left, from above and from the upper right, each restarting at the region's
-// edges; their sum, as totals[y][x - x0][candidate].
+// edges; their sum, as totals[y][x - x0][candidate]. Where the scanline's paths are bytes
+// (scanlinePathShift), the window scores and jump costs are divided by 2^shift and every path
+// value and sum stops at 255.
 std::vector<std::vector<std::vector<long long>>> bruteForceAggregation(const Channels& channels,
                                                                        const std::vector<SecondaryCamera>& cameras,
                                                                        const StereoOptions& options, int x0, int x1) {
@@ -474,7 +476,10 @@ std::vector<std::vector<std::vector<long long>>> bruteForceAggregation(const Cha
   const int candidates = options.disparityCount();
   const int columns = x1 - x0, rows = channels[0][0].rows;
   const long long scale = static_cast<long long>(options.window) * options.window * static_cast<long long>(cameras.size());
-  const long long p1 = std::llround(options.scanline_p1 * scale), p2 = std::llround(options.scanline_p2 * scale);
+  const int shift = scanlinePathShift(options, static_cast<int>(cameras.size()));
+  const long long cap = shift >= 0 ? 255 : std::numeric_limits<long long>::max();
+  const double jump_scale = std::ldexp(static_cast<double>(scale), shift >= 0 ? -shift : 0);
+  const long long p1 = std::llround(options.scanline_p1 * jump_scale), p2 = std::llround(options.scanline_p2 * jump_scale);
   std::vector<Paths> totals(rows, Paths(columns, std::vector<long long>(candidates, 0)));
   Paths from_above[3];  // the previous row's paths from the upper left, above and the upper right
   for (int y = 0; y < rows; ++y) {
@@ -484,6 +489,7 @@ std::vector<std::vector<std::vector<long long>>> bruteForceAggregation(const Cha
         for (size_t c = 0; c < cameras.size(); ++c) {
           cost[i][j] += cameraCost(channels, cameras, c, options, x0 + i, y, options.min_disparity + j);
         }
+        if (shift >= 0) cost[i][j] = std::min(cost[i][j] >> shift, cap);
       }
     }
     std::vector<Paths> paths;
@@ -491,7 +497,7 @@ std::vector<std::vector<std::vector<long long>>> bruteForceAggregation(const Cha
       Paths path(columns);
       for (int step = 0; step < columns; ++step) {
         const int i = direction > 0 ? step : columns - 1 - step;
-        path[i] = pathStep(cost[i], step == 0 ? nullptr : &path[i - direction], p1, p2);
+        path[i] = pathStep(cost[i], step == 0 ? nullptr : &path[i - direction], p1, p2, cap);
       }
       paths.push_back(path);
     }
@@ -501,7 +507,7 @@ std::vector<std::vector<std::vector<long long>>> bruteForceAggregation(const Cha
         for (int i = 0; i < columns; ++i) {
           const int from = i + direction - 1;
           const bool starts = y == 0 || from < 0 || from >= columns;
-          path[i] = pathStep(cost[i], starts ? nullptr : &from_above[direction][from], p1, p2);
+          path[i] = pathStep(cost[i], starts ? nullptr : &from_above[direction][from], p1, p2, cap);
         }
         paths.push_back(path);
         from_above[direction] = path;
@@ -509,7 +515,7 @@ std::vector<std::vector<std::vector<long long>>> bruteForceAggregation(const Cha
     }
     for (const Paths& path : paths) {
       for (int i = 0; i < columns; ++i) {
-        for (int j = 0; j < candidates; ++j) totals[y][i][j] += path[i][j];
+        for (int j = 0; j < candidates; ++j) totals[y][i][j] = std::min(totals[y][i][j] + path[i][j], cap);
       }
     }
   }
@@ -564,7 +570,9 @@ void expectPathsMatchBruteForce(const std::vector<SecondaryCamera>& cameras, Ste
     }
     if (!options.left_right_check) continue;
     // Secondary pixel s is reached by candidate d of reference pixel s + bx * d: the lowest such
-    // aggregated score, the smallest disparity on ties.
+    // aggregated score, the smallest disparity on ties; none where byte paths saturated at all of
+    // them.
+    const bool byte_paths = scanlinePathShift(options, 1) >= 0;
     const int bx = static_cast<int>(cameras[0].bx);
     int compared = 0;
     for (int s = 0; s < images[1].cols; ++s) {
@@ -579,6 +587,7 @@ void expectPathsMatchBruteForce(const std::vector<SecondaryCamera>& cameras, Ste
           disparity = static_cast<float>(d);
         }
       }
+      if (byte_paths && lowest == 255) disparity = kInvalidDisparity;
       ASSERT_EQ(match.reverse_disparity(y, s), disparity) << "(" << s << ", " << y << ")";
       compared += disparity != kInvalidDisparity;
     }
@@ -604,14 +613,47 @@ TEST(SadMatcherTest, ScanlineEqualsThePathsComputedTheSlowWay) {
   expectPathsMatchBruteForce({{-1, 0}}, options, 0, 58);
 }
 
-TEST(SadMatcherTest, ScanlineEqualsTheSlowWayWithWideScoresAndSeveralCameras) {
+TEST(SadMatcherTest, ScanlineEqualsTheSlowWayWithSeveralCamerasAndWideScores) {
   StereoOptions options = matchOptions();
   options.min_disparity = 2;
   options.max_disparity = 20;  // 19 candidates
-  options.window = 7;          // 2 * (49 * 255 * 2 + 32 * 49 * 2) > 32767: 32-bit scores
+  options.window = 7;          // grey levels: 49 * 255 * 2 < 32767, byte paths, scores divided by 2^6
   options.aggregation = CostAggregation::kScanline;
+  options.prefilter = Prefilter::kNone;  // as expectPathsMatchBruteForce matches
+  ASSERT_EQ(scanlinePathShift(options, 2), 6);
   // Columns where both cameras see every candidate: one region, its paths restart at its ends.
   expectPathsMatchBruteForce({{1, 0}, {-1, 0}}, options, 20, 50);
+  options.window = 15;  // 225 * 255 * 2 > 32767: 32-bit window scores and paths
+  ASSERT_EQ(scanlinePathShift(options, 2), -1);
+  expectPathsMatchBruteForce({{1, 0}, {-1, 0}}, options, 20, 50);
+}
+
+// The byte paths' scale from the largest window score, by hand: 5x5 x-Sobel capped at 31 (62 per
+// pixel) with the grey levels at a quarter scale (64): 25 * 126 = 3150 per camera. One camera:
+// 3150 / 8 = 393 < 512, so 2^3, and the large jump 32 * 25 / 8 = 100. Four cameras: 12600 / 32.
+// Semi-global paths, more than 256 candidates, or a large jump above 255 keep 16-bit paths.
+TEST(SadMatcherTest, BytePathsScaleTheLargestWindowScoreUnder512) {
+  StereoOptions options;
+  options.window = 5;
+  options.prefilter = Prefilter::kXSobel;
+  options.prefilter_cap = 31;
+  options.intensity_term = true;
+  options.aggregation = CostAggregation::kScanline;
+  options.max_disparity = 63;
+  EXPECT_EQ(scanlinePathShift(options, 1), 3);
+  EXPECT_EQ(scanlinePathShift(options, 4), 5);
+  options.intensity_term = false;  // 25 * 62 = 1550: 1550 / 4 = 387
+  EXPECT_EQ(scanlinePathShift(options, 1), 2);
+  options.max_disparity = 255;  // 256 candidates: indices still fit a byte
+  EXPECT_EQ(scanlinePathShift(options, 1), 2);
+  options.max_disparity = 256;
+  EXPECT_EQ(scanlinePathShift(options, 1), -1);
+  options.max_disparity = 63;
+  options.scanline_p2 = 48;  // 48 * 25 / 4 = 300 > 255
+  EXPECT_EQ(scanlinePathShift(options, 1), -1);
+  options.scanline_p2 = 32;
+  options.aggregation = CostAggregation::kSemiGlobal;
+  EXPECT_EQ(scanlinePathShift(options, 1), -1);
 }
 
 TEST(SadMatcherTest, SemiGlobalEqualsTheFivePathsComputedTheSlowWay) {
