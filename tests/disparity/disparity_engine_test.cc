@@ -83,7 +83,7 @@ TEST(TsukubaTest, ScanlineAggregationGivesMoreAndBetterDisparities) {
   const DisparityEvaluation window = evaluate(tsukubaBinocular(), window_only);
   print("real-image config, scanline", scanline);
   print("real-image config, window only", window);
-  EXPECT_GT(scanline.density, window.density + 0.15);
+  EXPECT_GT(scanline.density, window.density + 0.10);
   double low = 0.05, high = options.second_best_ratio;
   DisparityEvaluation matched = scanline;
   for (int step = 0; step < 12; ++step) {
@@ -93,8 +93,9 @@ TEST(TsukubaTest, ScanlineAggregationGivesMoreAndBetterDisparities) {
     if (tried.density <= window.density) matched = tried;
   }
   print("real-image config, scanline at the window's density", matched);
-  // Measured: 92.7% against 74.4% at the same settings; 1.05% against 3.23% bad-1.0 at 74.4%
-  // (every pixel with truth, no spike removal).
+  // Measured (Birchfield-Tomasi, as shipped): 93.1% against 81.1% at the same settings; 0.85%
+  // against 4.22% bad-1.0 at 81.1% (every pixel with truth, no spike removal). With absolute
+  // differences: 92.7% against 74.4%, 1.05% against 3.23%.
   ASSERT_GT(matched.density, window.density - 0.01);
   EXPECT_LT(matched.bad_1, 0.5 * window.bad_1);
 }
