@@ -71,8 +71,8 @@ CV_ALWAYS_INLINE cv::v_int32x8 byteGroupSums(const cv::v_uint8x32& v) {
 
 // Scanline paths in bytes (PreparedFrame::path_shift): twice the candidates of 16-bit lanes per
 // instruction. OpenCV's 8-bit + and - saturate, so a path that reaches 255 stays there instead of
-// wrapping; the window scores are scaled so that only candidates far worse than any that can win
-// saturate.
+// wrapping; the window scores are scaled so that only candidates far worse than any match the
+// validation keeps saturate (scanlinePathShift).
 template <>
 struct AccumulatorLanes<uint8_t> {
   using Vec = cv::v_uint8;

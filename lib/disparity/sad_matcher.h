@@ -32,10 +32,12 @@ struct SadMatch {
 // The scanline aggregation (CostAggregation::kScanline) keeps its paths and their sums in bytes,
 // with saturating arithmetic, which takes twice the candidates per vector instruction: the window
 // scores are divided by 2^shift, the smallest power of two that brings the largest possible window
-// score of `cameras` cameras under 512, and so are the jump costs. Only windows scoring more than
-// half the largest possible score saturate at 255, and such a window never wins. Returns -1 where the
-// paths keep the scores' own width: semi-global paths, more than 256 candidates, window scores
-// beyond 16 bits, or a large-jump cost above 255 after the division.
+// score of `cameras` cameras under 512, and so are the jump costs. A window scoring more than half
+// the largest possible score, or a sum of the two paths past 255, saturates at 255: such a
+// candidate is far worse than any match the distinctiveness test keeps (docs/stereo.md measures
+// the accuracy). Returns -1 where the paths keep the scores' own width: semi-global paths, more
+// than 256 candidates, window scores beyond 16 bits, or a large-jump cost above 255 after the
+// division.
 int scanlinePathShift(const StereoOptions& options, int cameras);
 
 // Multi-baseline SAD stereo (paper section 2.2, after Okutomi and Kanade): every view is
