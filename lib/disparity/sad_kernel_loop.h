@@ -295,9 +295,23 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
     constexpr int kChannels = decltype(intensity_tag)::value ? 2 : 1;
     for (int g = 0; g < groups; ++g) {
       const int first = groups == 1 ? 0 : g, last = groups == 1 ? cameras : g + 1;
-      // Locals, so that the compiler keeps them in registers across the stores below.
+      // Locals, so that the compiler keeps them in registers across the stores below (the arrays
+      // indexed by camera could alias them and would be read again after every store).
       const uchar* first_candidates[kChannels];
-      for (int k = 0; k < kChannels; ++k) first_candidates[k] = candidates[first][k];
+      const uchar* first_lows[kChannels];
+      const uchar* first_highs[kChannels];
+      const uchar* first_reference_low_rows[kChannels];
+      const uchar* first_reference_high_rows[kChannels];
+      for (int k = 0; k < kChannels; ++k) {
+        first_candidates[k] = candidates[first][k];
+        first_lows[k] = candidate_lows[first][k];
+        first_highs[k] = candidate_highs[first][k];
+        first_reference_low_rows[k] = reference_low_rows[first][k];
+        first_reference_high_rows[k] = reference_high_rows[first][k];
+      }
+      const uchar* reference_channel_rows[kChannels];
+      for (int k = 0; k < kChannels; ++k) reference_channel_rows[k] = reference_rows[k];
+      const bool group_byte_costs = byte_costs;
       const ptrdiff_t first_x_step = candidate_x_step[first];
       const size_t ring_row_offset = (static_cast<size_t>(g) * window + slot) * row_size;
       uchar* const byte_ring_row = ring + ring_row_offset;
@@ -306,31 +320,32 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
       const int count = padded;
       for (int xe = 0; xe < nx; ++xe) {
         const int x = x0 - r + xe;
-        cv::v_uint8 reference[kChannels];
-        cv::v_uint8 reference_low[kMaxCameras][kChannels], reference_high[kMaxCameras][kChannels];
+        // The reference's sampling interval along the first camera's baseline in locals; the
+        // other cameras' (several in a group) are broadcast where they are used.
+        cv::v_uint8 reference[kChannels], first_reference_low[kChannels], first_reference_high[kChannels];
         for (int k = 0; k < kChannels; ++k) {
-          reference[k] = cv::vx_setall_u8(reference_rows[k][x]);
+          reference[k] = cv::vx_setall_u8(reference_channel_rows[k][x]);
           if constexpr (kBirchfieldTomasi) {
-            for (int c = first; c < last; ++c) {
-              reference_low[c][k] = cv::vx_setall_u8(reference_low_rows[c][k][x]);
-              reference_high[c][k] = cv::vx_setall_u8(reference_high_rows[c][k][x]);
-            }
+            first_reference_low[k] = cv::vx_setall_u8(first_reference_low_rows[k][x]);
+            first_reference_high[k] = cv::vx_setall_u8(first_reference_high_rows[k][x]);
           }
         }
-        // Camera c's cost of the candidates at `offset`, summed over the channels: the absolute
+        // A camera's cost of the candidates at `offset`, summed over the channels: the absolute
         // difference, or the smaller of the two distances of a pixel to the other's sampling
         // interval (u8 subtraction saturates at 0, so the larger of the two signed gaps is the
         // distance). The channels' costs add up within a byte (max_difference).
-        const auto pixelCost = [&](int c, const uchar* const* values, ptrdiff_t offset) __attribute__((always_inline)) {
+        const auto pixelCost = [&](const uchar* const* values, const uchar* const* lows, const uchar* const* highs,
+                                   const cv::v_uint8* reference_lows, const cv::v_uint8* reference_highs,
+                                   ptrdiff_t offset) __attribute__((always_inline)) {
           cv::v_uint8 cost;
           for (int k = 0; k < kChannels; ++k) {
             const cv::v_uint8 candidate = cv::vx_load(values[k] + offset);
             cv::v_uint8 channel_cost;
             if constexpr (kBirchfieldTomasi) {
-              const cv::v_uint8 to_candidate = cv::v_max(reference[k] - cv::vx_load(candidate_highs[c][k] + offset),
-                                                         cv::vx_load(candidate_lows[c][k] + offset) - reference[k]);
+              const cv::v_uint8 to_candidate = cv::v_max(reference[k] - cv::vx_load(highs[k] + offset),
+                                                         cv::vx_load(lows[k] + offset) - reference[k]);
               const cv::v_uint8 to_reference =
-                  cv::v_max(candidate - reference_high[c][k], reference_low[c][k] - candidate);
+                  cv::v_max(candidate - reference_highs[k], reference_lows[k] - candidate);
               channel_cost = cv::v_min(to_candidate, to_reference);
             } else {
               channel_cost = cv::v_absdiff(reference[k], candidate);
@@ -343,12 +358,24 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
         Acc* const sum_entry = sums + static_cast<size_t>(xe) * count;
         for (int b = 0; b < count; b += kByteLanes) {
           Vec entering[kVectorsPerBytes], leaving[kVectorsPerBytes];
-          const cv::v_uint8 own = pixelCost(first, first_candidates, own_offset + b);
-          if (byte_costs) {
+          const cv::v_uint8 own =
+              pixelCost(first_candidates, first_lows, first_highs, first_reference_low, first_reference_high, own_offset + b);
+          const auto otherCost = [&](int c) __attribute__((always_inline)) {
+            cv::v_uint8 reference_low[kChannels], reference_high[kChannels];
+            for (int k = 0; k < kChannels; ++k) {
+              if constexpr (kBirchfieldTomasi) {
+                reference_low[k] = cv::vx_setall_u8(reference_low_rows[c][k][x]);
+                reference_high[k] = cv::vx_setall_u8(reference_high_rows[c][k][x]);
+              }
+            }
+            return pixelCost(candidates[c], candidate_lows[c], candidate_highs[c], reference_low, reference_high,
+                             x * candidate_x_step[c] + b);
+          };
+          if (group_byte_costs) {
             // The costs of every camera of the group add up within a byte: widen once.
             cv::v_uint8 total = own;
             for (int c = first + 1; c < last; ++c) {
-              total = cv::v_add_wrap(total, pixelCost(c, candidates[c], x * candidate_x_step[c] + b));
+              total = cv::v_add_wrap(total, otherCost(c));
             }
             uchar* const ring_lanes = byte_ring_row + static_cast<size_t>(xe) * count + b;
             Lanes::widen(cv::vx_load(ring_lanes), leaving);
@@ -358,7 +385,7 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
             Lanes::widen(own, entering);
             for (int c = first + 1; c < last; ++c) {
               Vec more[kVectorsPerBytes];
-              Lanes::widen(pixelCost(c, candidates[c], x * candidate_x_step[c] + b), more);
+              Lanes::widen(otherCost(c), more);
               for (int i = 0; i < kVectorsPerBytes; ++i) entering[i] = Lanes::add(entering[i], more[i]);
             }
             for (int i = 0; i < kVectorsPerBytes; ++i) {
