@@ -304,10 +304,13 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
       const uchar* first_reference_high_rows[kChannels];
       for (int k = 0; k < kChannels; ++k) {
         first_candidates[k] = candidates[first][k];
-        first_lows[k] = candidate_lows[first][k];
-        first_highs[k] = candidate_highs[first][k];
-        first_reference_low_rows[k] = reference_low_rows[first][k];
-        first_reference_high_rows[k] = reference_high_rows[first][k];
+        // Set by enterRow only for Birchfield-Tomasi.
+        if constexpr (kBirchfieldTomasi) {
+          first_lows[k] = candidate_lows[first][k];
+          first_highs[k] = candidate_highs[first][k];
+          first_reference_low_rows[k] = reference_low_rows[first][k];
+          first_reference_high_rows[k] = reference_high_rows[first][k];
+        }
       }
       const uchar* reference_channel_rows[kChannels];
       for (int k = 0; k < kChannels; ++k) reference_channel_rows[k] = reference_rows[k];

@@ -572,7 +572,7 @@ void expectPathsMatchBruteForce(const std::vector<SecondaryCamera>& cameras, Ste
     // Secondary pixel s is reached by candidate d of reference pixel s + bx * d: the lowest such
     // aggregated score, the smallest disparity on ties; none where byte paths saturated at all of
     // them.
-    const bool byte_paths = scanlinePathShift(options, 1) >= 0;
+    const bool byte_paths = scanlinePathShift(options, static_cast<int>(cameras.size())) >= 0;
     const int bx = static_cast<int>(cameras[0].bx);
     int compared = 0;
     for (int s = 0; s < images[1].cols; ++s) {
