@@ -1,5 +1,6 @@
 #include "disparity/validation.h"
 
+#include <opencv2/core/hal/intrin.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include <cmath>
@@ -69,22 +70,42 @@ void rejectInconsistentMatches(cv::Mat1f& disparity, const cv::Mat1f& swapped, c
   const cv::Range tested = rowsOf(rows, height);
   const float bx = static_cast<float>(first.bx), by = static_cast<float>(first.by);
   const float limit = static_cast<float>(max_difference);
+  // Branch-free: valid and invalid pixels are mixed at random, which a branch would mispredict
+  // (and std::lround is a library call). The matched pixel is rounded half up, as lround does
+  // for these coordinates; an invalid swapped disparity (+inf) fails the comparison.
+  const auto test = [&](float* row, int y, int x) {
+    const float d = row[x];
+    const bool valid = isValidDisparity(d);
+    const float shift = valid ? d : 0.0f;
+    const int xs = cvFloor(static_cast<float>(x) - bx * shift + 0.5f);
+    const int ys = by == 0.0f ? y : cvFloor(static_cast<float>(y) - by * shift + 0.5f);
+    const bool inside = valid && static_cast<unsigned>(xs) < static_cast<unsigned>(width) &&
+                        static_cast<unsigned>(ys) < static_cast<unsigned>(height);
+    const float seen = swapped(inside ? ys : 0, inside ? xs : 0);
+    row[x] = inside && std::abs(seen - d) <= limit ? d : kInvalidDisparity;
+  };
   for (int y = tested.start; y < tested.end; ++y) {
     float* row = disparity.ptr<float>(y);
-    for (int x = 0; x < width; ++x) {
-      // Branch-free: valid and invalid pixels are mixed at random, which a branch would mispredict
-      // (and std::lround is a library call). The matched pixel is rounded half up, as lround does
-      // for these coordinates; an invalid swapped disparity (+inf) fails the comparison.
-      const float d = row[x];
-      const bool valid = isValidDisparity(d);
-      const float shift = valid ? d : 0.0f;
-      const int xs = cvFloor(static_cast<float>(x) - bx * shift + 0.5f);
-      const int ys = by == 0.0f ? y : cvFloor(static_cast<float>(y) - by * shift + 0.5f);
-      const bool inside = valid && static_cast<unsigned>(xs) < static_cast<unsigned>(width) &&
-                          static_cast<unsigned>(ys) < static_cast<unsigned>(height);
-      const float seen = swapped(inside ? ys : 0, inside ? xs : 0);
-      row[x] = inside && std::abs(seen - d) <= limit ? d : kInvalidDisparity;
+    int x = 0;
+    if (by == 0.0f) {
+      // A horizontal camera's matches lie on the same row: four pixels at a time, the matched
+      // pixels gathered (the test above, lane by lane).
+      const float* swapped_row = swapped.ptr<float>(y);
+      const cv::v_float32x4 invalid = cv::v_setall_f32(kInvalidDisparity), half = cv::v_setall_f32(0.5f);
+      const cv::v_float32x4 baseline = cv::v_setall_f32(bx), limits = cv::v_setall_f32(limit);
+      const cv::v_int32x4 columns = cv::v_setall_s32(width);
+      cv::v_float32x4 xf(0.0f, 1.0f, 2.0f, 3.0f);
+      for (; x + 4 <= width; x += 4, xf += cv::v_setall_f32(4.0f)) {
+        const cv::v_float32x4 d = cv::v_load(row + x);
+        const cv::v_float32x4 valid = d != invalid;
+        const cv::v_int32x4 xs = cv::v_floor(xf - baseline * (d & valid) + half);
+        const cv::v_int32x4 inside = cv::v_reinterpret_as_s32(valid) & (xs >= cv::v_setall_s32(0)) & (xs < columns);
+        const cv::v_float32x4 seen = cv::v_lut(swapped_row, xs & inside);
+        const cv::v_float32x4 keep = cv::v_reinterpret_as_f32(inside) & (cv::v_abs(seen - d) <= limits);
+        cv::v_store(row + x, cv::v_select(keep, d, invalid));
+      }
     }
+    for (; x < width; ++x) test(row, y, x);
   }
 }
 

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <limits>
 
 #include "disparity/disparity_engine.h"
@@ -145,6 +146,39 @@ TEST(LeftRightCheckTest, LooksUpTheMatchedPixelInTheSwappedImage) {
   EXPECT_EQ(disparity(0, 5), 2.0f);
   EXPECT_EQ(disparity(0, 7), kInvalidDisparity);
   EXPECT_EQ(disparity(0, 1), kInvalidDisparity);
+}
+
+// Every pixel of rows whose width is no multiple of four (horizontal rigs take four pixels at a
+// time), against the definition: kept if valid, its match at x - bx*d rounded half up lies in the
+// image, and the swapped disparity there is within the limit. Disparities in quarter pixels and
+// the baselines are exact in float, so the rounding is unambiguous.
+TEST(LeftRightCheckTest, EveryPixelOfHorizontalRigsAsDefined) {
+  cv::RNG random(7);
+  for (const double bx : {1.0, -1.0, 0.5, -2.0}) {
+    cv::Mat1f disparity(5, 23), swapped(5, 23);
+    for (int y = 0; y < disparity.rows; ++y) {
+      for (int x = 0; x < disparity.cols; ++x) {
+        disparity(y, x) = random.uniform(0, 5) == 0 ? kInvalidDisparity : random.uniform(0, 48) / 4.0f;
+        swapped(y, x) = random.uniform(0, 5) == 0 ? kInvalidDisparity : random.uniform(0, 48) / 4.0f;
+      }
+    }
+    cv::Mat1f expected = disparity.clone();
+    for (int y = 0; y < disparity.rows; ++y) {
+      for (int x = 0; x < disparity.cols; ++x) {
+        const float d = disparity(y, x);
+        if (d == kInvalidDisparity) continue;
+        const int xs = static_cast<int>(std::floor(x - bx * d + 0.5));
+        const bool kept = xs >= 0 && xs < disparity.cols && std::abs(swapped(y, xs) - d) <= 1.0f;
+        if (!kept) expected(y, x) = kInvalidDisparity;
+      }
+    }
+    rejectInconsistentMatches(disparity, swapped, {bx, 0}, 1.0);
+    for (int y = 0; y < disparity.rows; ++y) {
+      for (int x = 0; x < disparity.cols; ++x) {
+        EXPECT_EQ(disparity(y, x), expected(y, x)) << "bx " << bx << " (" << x << ", " << y << ")";
+      }
+    }
+  }
 }
 
 // The tests of a stripe of rows read the other rows (the vertical camera's match lies below)
