@@ -583,6 +583,39 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
     return minInEveryLane(new_lowest);
   };
 
+  // followPath for a path of kChunks vectors (known at compile time), whose neighbour's path is
+  // read from, and the new one left in, the vectors `held` rather than memory: the step from
+  // pixel to pixel then does not wait for the neighbour's stores to be read back (12% of the
+  // scanline's time at 64 candidates with AVX2). Used for two vectors (64 candidates in bytes with
+  // AVX2, 32 with SSE2) only: adding the other counts to the same loop, or one function templated
+  // for both ways, measured slower at 640x480 (docs/experiments.md).
+  const auto followHeldPath = [&](auto chunks_tag, const PathAcc* cost, PathVec* held, bool first,
+                                  const PathVec& lowest_all, PathAcc* path) __attribute__((always_inline)) {
+    constexpr int kChunks = decltype(chunks_tag)::value;
+    const PathVec jump_floor = PathLanes::add(lowest_all, large_jump);
+    const PathVec beyond = PathLanes::all(kMaxScore);
+    PathVec new_lowest = PathLanes::all(kMaxScore);
+    PathVec next[kChunks];
+    for (int chunk = 0; chunk < kChunks; ++chunk) {
+      const int b = chunk * PathLanes::kCount;
+      PathVec value = cv::vx_load(cost + b);
+      if (!first) {
+        const PathVec below = chunk > 0 ? held[chunk - 1] : beyond;
+        const PathVec above = chunk + 1 < kChunks ? held[chunk + 1] : beyond;
+        const PathVec neighbours =
+            cv::v_min(cv::v_extract<PathLanes::kCount - 1>(below, held[chunk]), cv::v_extract<1>(held[chunk], above));
+        const PathVec reach = cv::v_min(cv::v_min(held[chunk], PathLanes::add(neighbours, small_jump)), jump_floor);
+        value = PathLanes::add(value, PathLanes::subtract(reach, lowest_all));
+      }
+      value = padded_lanes(value, chunk);
+      new_lowest = cv::v_min(new_lowest, value);
+      cv::v_store(path + b, value);
+      next[chunk] = value;
+    }
+    for (int chunk = 0; chunk < kChunks; ++chunk) held[chunk] = next[chunk];
+    return minInEveryLane(new_lowest);
+  };
+
   // Horizontal running sum of the column sums gives every candidate's window score of each pixel
   // of row y; the winner is taken at once, or after the scanline paths over the whole row.
   const auto matchRow = [&](int y, auto combine_groups) {
@@ -609,6 +642,10 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
     const int count = padded;
     Vec sorted[kMaxCameras];
     PathVec forward_lowest = PathLanes::all(0);
+    // The paths from the left and from the right held in registers (followHeldPath).
+    constexpr std::integral_constant<int, 2> kHeldChunks{};
+    PathVec forward_held[kHeldChunks] = {PathLanes::all(kMaxScore), PathLanes::all(kMaxScore)};
+    PathVec backward_held[kHeldChunks] = {PathLanes::all(kMaxScore), PathLanes::all(kMaxScore)};
     if (reverse_sign) std::fill(reverse_scores, reverse_scores + reverse_size, kMaxScore);
     for (int x = region.x0; x < region.x1; ++x) {
       // Columns entering and leaving the window, relative to each group's column sums.
@@ -654,8 +691,13 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
           const Vec high = windowScores(b + Lanes::kCount, group_scores, window_scores);
           cv::v_store(pixel_costs + b, cv::v_pack_u(low >> path_shift, high >> path_shift));
         }
-        forward_lowest = followPath(pixel_costs, i == 0 ? nullptr : forward_paths + (i - 1) * path_stride,
-                                    forward_lowest, forward_paths + i * path_stride);
+        if (chunk_count == kHeldChunks) {
+          forward_lowest = followHeldPath(kHeldChunks, pixel_costs, forward_held, i == 0, forward_lowest,
+                                          forward_paths + i * path_stride);
+        } else {
+          forward_lowest = followPath(pixel_costs, i == 0 ? nullptr : forward_paths + (i - 1) * path_stride,
+                                      forward_lowest, forward_paths + i * path_stride);
+        }
       } else {
         // The pixel's combined scores: in the group scores themselves for one group, else in a
         // buffer of their own; for the scanline, in the row's costs.
@@ -691,7 +733,11 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
       const bool first = x == region.x1 - 1;
       PathAcc* const path = backward_paths + (i % 2) * path_stride;
       const PathAcc* const previous = first ? nullptr : backward_paths + ((i + 1) % 2) * path_stride;
-      backward_lowest = followPath(row_costs + i * padded, previous, backward_lowest, path);
+      if (kBytePaths && chunk_count == kHeldChunks) {
+        backward_lowest = followHeldPath(kHeldChunks, row_costs + i * padded, backward_held, first, backward_lowest, path);
+      } else {
+        backward_lowest = followPath(row_costs + i * padded, previous, backward_lowest, path);
+      }
       const PathAcc* const forward = forward_paths + i * path_stride;
       for (int chunk = 0; chunk < chunk_count; ++chunk) {
         const int b = chunk * PathLanes::kCount;

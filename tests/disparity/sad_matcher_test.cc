@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -548,7 +549,7 @@ BruteForce decideBruteForce(const std::vector<long long>& total, const StereoOpt
 void expectPathsMatchBruteForce(const std::vector<SecondaryCamera>& cameras, StereoOptions options, int x0, int x1,
                                 Prefilter prefilter = Prefilter::kNone) {
   std::vector<cv::Mat1b> images;
-  const StereoFrame frame = noiseFrame(cameras, cv::Size(70, 30), 23, images);
+  const StereoFrame frame = noiseFrame(cameras, cv::Size(std::max(70, x1), 30), 23, images);
   options.prefilter = prefilter;
   options.second_best_ratio = 0.9;      // so that the runner-up is found
   options.uniqueness_threshold = 0.5;   // and the sum of scores
@@ -611,6 +612,24 @@ TEST(SadMatcherTest, ScanlineEqualsThePathsComputedTheSlowWay) {
   const StereoOptions options = smallPathOptions(CostAggregation::kScanline);
   expectPathsMatchBruteForce({{1, 0}}, options, 12, 70);
   expectPathsMatchBruteForce({{-1, 0}}, options, 0, 58);
+}
+
+// The matcher keeps the scanline's byte paths in registers from pixel to pixel when they are two
+// vectors, in memory otherwise: 13, 20, 40, 70 and 150 candidates are 1, 1, 2, 3 and 5 vectors of
+// bytes with AVX2 (1, 2, 3, 5 and 10 with SSE2). The semi-global paths (16-bit) stay in memory.
+TEST(SadMatcherTest, PathsEqualTheSlowWayAtEveryVectorCount) {
+  for (const SimdLevel simd : {SimdLevel::kSse2, SimdLevel::kAvx2}) {
+    if (!simdSupported(simd)) continue;
+    for (const CostAggregation aggregation : {CostAggregation::kScanline, CostAggregation::kSemiGlobal}) {
+      for (const int candidates : {13, 20, 40, 70, 150}) {
+        StereoOptions options = smallPathOptions(aggregation);
+        options.simd = simd;
+        options.max_disparity = candidates - 1;
+        SCOPED_TRACE(std::to_string(candidates) + " candidates, SIMD level " + std::to_string(static_cast<int>(simd)));
+        expectPathsMatchBruteForce({{1, 0}}, options, candidates - 1, candidates + 59);
+      }
+    }
+  }
 }
 
 TEST(SadMatcherTest, ScanlineEqualsTheSlowWayWithSeveralCamerasAndWideScores) {
