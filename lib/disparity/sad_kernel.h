@@ -32,7 +32,7 @@ struct BilinearTap {
 // With PixelCost::kBirchfieldTomasi the lowest and highest values within half a pixel of each
 // pixel along the baseline are arranged the same way, so the same address reads all three.
 struct ArrangedImage {
-  cv::Mat1b flipped, padded;  // the image flipped, then padded by the margin
+  cv::Mat1b padded;  // the image flipped, then padded by the margin
   cv::Mat1b buffer;           // `padded`, or its transpose or shear for vertical and diagonal cameras
 };
 
@@ -62,7 +62,7 @@ struct CandidateSource {
 // interval along each camera's baseline (one pair per camera, as the cameras' baselines may point
 // different ways).
 struct ReferenceChannel {
-  cv::Mat1b image, padded;
+  cv::Mat1b image, padded;  // `image` is the interior of `padded`
   std::vector<cv::Mat1b> low, high;
 };
 

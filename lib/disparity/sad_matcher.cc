@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -88,17 +89,48 @@ void shear(const cv::Mat1b& image, cv::Mat1b& sheared) {
   }
 }
 
+// The image of `size` inside `padded`, `margin` pixels in from each side (allocating `padded`
+// once per frame size): images are written there, then replicateBorder pads them in place, which
+// saves a copy of the whole image per padding.
+cv::Mat1b interior(cv::Mat1b& padded, cv::Size size, int margin) {
+  padded.create(size.height + 2 * margin, size.width + 2 * margin);
+  return padded(cv::Rect(margin, margin, size.width, size.height));
+}
+
+// Fills the margins of `padded` with the nearest pixel of its interior, as
+// cv::copyMakeBorder(..., cv::BORDER_REPLICATE) would.
+void replicateBorder(cv::Mat1b& padded, int margin) {
+  const int rows = padded.rows, cols = padded.cols;
+  for (int y = margin; y < rows - margin; ++y) {
+    uchar* row = padded.ptr<uchar>(y);
+    std::memset(row, row[margin], static_cast<size_t>(margin));
+    std::memset(row + cols - margin, row[cols - margin - 1], static_cast<size_t>(margin));
+  }
+  for (int y = 0; y < margin; ++y) std::memcpy(padded.ptr<uchar>(y), padded.ptr<uchar>(margin), cols);
+  for (int y = rows - margin; y < rows; ++y) {
+    std::memcpy(padded.ptr<uchar>(y), padded.ptr<uchar>(rows - margin - 1), cols);
+  }
+}
+
+// `image` padded by `margin` into `padded`.
+void pad(const cv::Mat1b& image, int margin, cv::Mat1b& padded) {
+  cv::Mat1b inside = interior(padded, image.size(), margin);
+  image.copyTo(inside);
+  replicateBorder(padded, margin);
+}
+
 // Arranges `image` as CandidateSource describes for a direct camera of whole-pixel steps (sx, sy)
 // (candidate d of pixel (x, y) is (x - sx*d, y - sy*d)), or only pads it for a tabulated one.
 // Flipping the axes with a positive step makes the candidate (x' + |sx| d, y' + |sy| d) in the
 // flipped image, x' = width-1-x or x.
 void arrangeImage(const cv::Mat1b& image, int sx, int sy, int margin, ArrangedImage& arranged) {
-  cv::Mat1b oriented = image;
   if (sx > 0 || sy > 0) {
-    cv::flip(image, arranged.flipped, sx > 0 && sy > 0 ? -1 : (sx > 0 ? 1 : 0));
-    oriented = arranged.flipped;
+    cv::Mat1b inside = interior(arranged.padded, image.size(), margin);
+    cv::flip(image, inside, sx > 0 && sy > 0 ? -1 : (sx > 0 ? 1 : 0));
+    replicateBorder(arranged.padded, margin);
+  } else {
+    pad(image, margin, arranged.padded);
   }
-  cv::copyMakeBorder(oriented, arranged.padded, margin, margin, margin, margin, cv::BORDER_REPLICATE);
   if (sy == 0) {
     arranged.buffer = arranged.padded;
   } else if (sx == 0) {
@@ -113,7 +145,8 @@ void arrangeImage(const cv::Mat1b& image, int sx, int sy, int margin, ArrangedIm
 // (borders replicated; halves rounded up).
 void samplingInterval(const cv::Mat1b& image, int dx, int dy, cv::Mat1b& low, cv::Mat1b& high) {
   thread_local cv::Mat1b padded;
-  cv::copyMakeBorder(image, padded, 1, 1, 1, 1, cv::BORDER_REPLICATE);
+  // Isolated: `image` may lie inside a padded image, whose margins are not this border.
+  cv::copyMakeBorder(image, padded, 1, 1, 1, 1, cv::BORDER_REPLICATE | cv::BORDER_ISOLATED);
   low.create(image.size());
   high.create(image.size());
   const int width = image.cols;
@@ -315,28 +348,27 @@ void prepareFrame(const StereoFrame& frame, const StereoOptions& options, const 
   const size_t cameras = frame.secondaries.size();
   prepared.sources.resize(cameras);
   prepared.reference.resize(channels);
-  const auto pad = [&](const cv::Mat1b& image, cv::Mat1b& padded) {
-    cv::copyMakeBorder(image, padded, prepared.margin, prepared.margin, prepared.margin, prepared.margin,
-                       cv::BORDER_REPLICATE);
-  };
+  const int margin = prepared.margin;
   // View 0 is the reference, view c + 1 secondary camera c; each writes only its own images, so
   // with several threads they are prepared in parallel (done on one, this would cap what a
   // second thread gains on small images).
   const auto prepareViews = [&](const cv::Range& views) {
-    thread_local cv::Mat1b low, high;
     for (int view = views.start; view < views.end; ++view) {
       if (view == 0) {
         for (int k = 0; k < channels; ++k) {
           ReferenceChannel& channel = prepared.reference[k];
+          channel.image = interior(channel.padded, frame.reference.size(), margin);
           channelImage(frame.reference, k, channel.image);
-          pad(channel.image, channel.padded);
+          replicateBorder(channel.padded, margin);
           channel.low.resize(prepared.birchfield_tomasi ? cameras : 0);
           channel.high.resize(prepared.birchfield_tomasi ? cameras : 0);
           for (size_t c = 0; c < channel.low.size(); ++c) {
             const cv::Point direction = baselineDirection(frame.secondaries[c].camera);
+            cv::Mat1b low = interior(channel.low[c], frame.reference.size(), margin);
+            cv::Mat1b high = interior(channel.high[c], frame.reference.size(), margin);
             samplingInterval(channel.image, direction.x, direction.y, low, high);
-            pad(low, channel.low[c]);
-            pad(high, channel.high[c]);
+            replicateBorder(channel.low[c], margin);
+            replicateBorder(channel.high[c], margin);
           }
         }
         continue;
