@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -90,33 +89,18 @@ void shear(const cv::Mat1b& image, cv::Mat1b& sheared) {
 }
 
 // The image of `size` inside `padded`, `margin` pixels in from each side (allocating `padded`
-// once per frame size): images are written there, then replicateBorder pads them in place, which
-// saves a copy of the whole image per padding.
+// once per frame size): images are written there and padded in place (padInPlace), which saves a
+// copy of the whole image per padding.
 cv::Mat1b interior(cv::Mat1b& padded, cv::Size size, int margin) {
   padded.create(size.height + 2 * margin, size.width + 2 * margin);
   return padded(cv::Rect(margin, margin, size.width, size.height));
 }
 
-// Fills the margins of `padded` with the nearest pixel of its interior, as
-// cv::copyMakeBorder(..., cv::BORDER_REPLICATE) would.
-void replicateBorder(cv::Mat1b& padded, int margin) {
-  const int rows = padded.rows, cols = padded.cols;
-  for (int y = margin; y < rows - margin; ++y) {
-    uchar* row = padded.ptr<uchar>(y);
-    std::memset(row, row[margin], static_cast<size_t>(margin));
-    std::memset(row + cols - margin, row[cols - margin - 1], static_cast<size_t>(margin));
-  }
-  for (int y = 0; y < margin; ++y) std::memcpy(padded.ptr<uchar>(y), padded.ptr<uchar>(margin), cols);
-  for (int y = rows - margin; y < rows; ++y) {
-    std::memcpy(padded.ptr<uchar>(y), padded.ptr<uchar>(rows - margin - 1), cols);
-  }
-}
-
-// `image` padded by `margin` into `padded`.
-void pad(const cv::Mat1b& image, int margin, cv::Mat1b& padded) {
-  cv::Mat1b inside = interior(padded, image.size(), margin);
-  image.copyTo(inside);
-  replicateBorder(padded, margin);
+// Fills the margins of `padded` around its interior `inside` with the nearest interior pixel.
+// cv::copyMakeBorder sees its source inside its destination and builds only the border; isolated,
+// so that it does not take the margins around the interior for image.
+void padInPlace(const cv::Mat1b& inside, int margin, cv::Mat1b& padded) {
+  cv::copyMakeBorder(inside, padded, margin, margin, margin, margin, cv::BORDER_REPLICATE | cv::BORDER_ISOLATED);
 }
 
 // Arranges `image` as CandidateSource describes for a direct camera of whole-pixel steps (sx, sy)
@@ -124,13 +108,13 @@ void pad(const cv::Mat1b& image, int margin, cv::Mat1b& padded) {
 // Flipping the axes with a positive step makes the candidate (x' + |sx| d, y' + |sy| d) in the
 // flipped image, x' = width-1-x or x.
 void arrangeImage(const cv::Mat1b& image, int sx, int sy, int margin, ArrangedImage& arranged) {
+  cv::Mat1b inside = interior(arranged.padded, image.size(), margin);
   if (sx > 0 || sy > 0) {
-    cv::Mat1b inside = interior(arranged.padded, image.size(), margin);
     cv::flip(image, inside, sx > 0 && sy > 0 ? -1 : (sx > 0 ? 1 : 0));
-    replicateBorder(arranged.padded, margin);
   } else {
-    pad(image, margin, arranged.padded);
+    image.copyTo(inside);
   }
+  padInPlace(inside, margin, arranged.padded);
   if (sy == 0) {
     arranged.buffer = arranged.padded;
   } else if (sx == 0) {
@@ -359,7 +343,7 @@ void prepareFrame(const StereoFrame& frame, const StereoOptions& options, const 
           ReferenceChannel& channel = prepared.reference[k];
           channel.image = interior(channel.padded, frame.reference.size(), margin);
           channelImage(frame.reference, k, channel.image);
-          replicateBorder(channel.padded, margin);
+          padInPlace(channel.image, margin, channel.padded);
           channel.low.resize(prepared.birchfield_tomasi ? cameras : 0);
           channel.high.resize(prepared.birchfield_tomasi ? cameras : 0);
           for (size_t c = 0; c < channel.low.size(); ++c) {
@@ -367,8 +351,8 @@ void prepareFrame(const StereoFrame& frame, const StereoOptions& options, const 
             cv::Mat1b low = interior(channel.low[c], frame.reference.size(), margin);
             cv::Mat1b high = interior(channel.high[c], frame.reference.size(), margin);
             samplingInterval(channel.image, direction.x, direction.y, low, high);
-            replicateBorder(channel.low[c], margin);
-            replicateBorder(channel.high[c], margin);
+            padInPlace(low, margin, channel.low[c]);
+            padInPlace(high, margin, channel.high[c]);
           }
         }
         continue;
