@@ -29,7 +29,7 @@ struct BilinearTap {
 // or longer baselines) are interpolated into a per-row table; for them origin/x_step/y_step
 // address pixel (x, y) itself.
 //
-// With PixelCost::kBirchfieldTomasi the lowest and highest values within half a pixel of each
+// With the Birchfield-Tomasi costs the lowest and highest values within half a pixel of each
 // pixel along the baseline are arranged the same way, so the same address reads all three.
 struct ArrangedImage {
   cv::Mat1b padded;  // the image flipped, then padded by the margin
@@ -41,7 +41,8 @@ struct ArrangedImage {
 // scale (as cv::StereoSGBM adds them to its x-Sobel cost).
 constexpr int kMaxChannels = 2;
 
-// One channel of a secondary camera: its image and sampling interval, and their arrangements.
+// One channel of a secondary camera: its image and sampling interval, and the arrangements of
+// those the pixel cost reads (PreparedFrame::candidateValues, candidateIntervals).
 struct CandidateChannel {
   cv::Mat1b image, image_low, image_high;
   ArrangedImage values, low, high;
@@ -58,7 +59,7 @@ struct CandidateSource {
   bool tabulated() const { return !taps.empty(); }
 };
 
-// One channel of the reference, padded by margin. PixelCost::kBirchfieldTomasi: its sampling
+// One channel of the reference, padded by margin. With PixelCost::kBirchfieldTomasi its sampling
 // interval along each camera's baseline (one pair per camera, as the cameras' baselines may point
 // different ways).
 struct ReferenceChannel {
@@ -69,7 +70,7 @@ struct ReferenceChannel {
 struct PreparedFrame {
   std::vector<ReferenceChannel> reference;  // one per channel
   std::vector<CandidateSource> sources;
-  bool birchfield_tomasi = false;
+  PixelCost pixel_cost = PixelCost::kAbsoluteDifference;
   int margin = 0;
   int radius = 0;
   int min_disparity = 0;
@@ -89,6 +90,11 @@ struct PreparedFrame {
   // Binocular horizontal rig with the left-right check: +1 if candidate d of pixel x is pixel
   // x - d of the secondary image, -1 if x + d; 0 = no reverse match (SadMatch::reverse_disparity).
   int reverse_sign = 0;
+
+  // What the pixel cost reads: the candidates' values, their sampling intervals, the reference's.
+  bool candidateValues() const { return pixel_cost != PixelCost::kBirchfieldTomasiOneSided; }
+  bool candidateIntervals() const { return pixel_cost != PixelCost::kAbsoluteDifference; }
+  bool referenceIntervals() const { return pixel_cost == PixelCost::kBirchfieldTomasi; }
 };
 
 // A rectangle of reference pixels whose candidates, at every disparity, are inside the images of

@@ -216,10 +216,11 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
   PathAcc* const forward_paths = scratch(forward_path_buffer, row_pixels * path_stride);
   PathAcc* const backward_paths = scratch(backward_path_buffer, 2 * path_stride);
   PathAcc* const path_sums = scratch(path_sum_buffer, path_stride);
-  // A tabulated camera's candidates in each channel, and with Birchfield-Tomasi their sampling
-  // intervals' too.
+  // A tabulated camera's candidates in each channel: those of the images the pixel cost reads.
   const int channels = static_cast<int>(frame.reference.size());
-  const int images_per_channel = frame.birchfield_tomasi ? 3 : 1;
+  const bool candidate_values = frame.candidateValues(), candidate_intervals = frame.candidateIntervals();
+  const bool reference_intervals = frame.referenceIntervals();
+  const int images_per_channel = (candidate_values ? 1 : 0) + (candidate_intervals ? 2 : 0);
   const int images_per_camera = channels * images_per_channel;
   uchar* const tables = scratch(table_buffer, images_per_camera * cameras * row_size);
   // Semi-global: the paths that come down from the row above (from the upper left, above and the
@@ -260,7 +261,8 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
 
   // Per camera and channel: where row yy's candidates start and (per camera) the step from pixel to
   // pixel; for Birchfield-Tomasi also the candidates' sampling intervals (same addresses in their
-  // images) and the reference's along that camera's baseline. The reference's row per channel.
+  // images) and, symmetric, the reference's along that camera's baseline. The reference's row per
+  // channel.
   const uchar* reference_rows[kMaxChannels];
   const uchar* candidates[kMaxCameras][kMaxChannels];
   const uchar* candidate_lows[kMaxCameras][kMaxChannels];
@@ -268,7 +270,6 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
   ptrdiff_t candidate_x_step[kMaxCameras];
   const uchar* reference_low_rows[kMaxCameras][kMaxChannels];
   const uchar* reference_high_rows[kMaxCameras][kMaxChannels];
-  const bool birchfield_tomasi = frame.birchfield_tomasi;
 
   // The candidates of a tabulated camera along row yy, sampled from `image` (arranged as the
   // camera's values), into `table`; returns where pixel 0's candidates would be.
@@ -290,8 +291,11 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
 
   // The pixel costs of reference row yy against every candidate, into the ring slot of the row,
   // updating the column sums by (entering row - leaving row).
-  const auto enterGroups = [&](int slot, auto birchfield_tomasi_tag, auto intensity_tag) {
-    constexpr bool kBirchfieldTomasi = decltype(birchfield_tomasi_tag)::value;
+  const auto enterGroups = [&](int slot, auto cost_tag, auto intensity_tag) {
+    constexpr PixelCost kCost = decltype(cost_tag)::value;
+    constexpr bool kCandidateValues = kCost != PixelCost::kBirchfieldTomasiOneSided;
+    constexpr bool kCandidateIntervals = kCost != PixelCost::kAbsoluteDifference;
+    constexpr bool kReferenceIntervals = kCost == PixelCost::kBirchfieldTomasi;
     constexpr int kChannels = decltype(intensity_tag)::value ? 2 : 1;
     for (int g = 0; g < groups; ++g) {
       const int first = groups == 1 ? 0 : g, last = groups == 1 ? cameras : g + 1;
@@ -302,12 +306,14 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
       const uchar* first_highs[kChannels];
       const uchar* first_reference_low_rows[kChannels];
       const uchar* first_reference_high_rows[kChannels];
+      // Each set by enterRow only for the costs that read it.
       for (int k = 0; k < kChannels; ++k) {
-        first_candidates[k] = candidates[first][k];
-        // Set by enterRow only for Birchfield-Tomasi.
-        if constexpr (kBirchfieldTomasi) {
+        if constexpr (kCandidateValues) first_candidates[k] = candidates[first][k];
+        if constexpr (kCandidateIntervals) {
           first_lows[k] = candidate_lows[first][k];
           first_highs[k] = candidate_highs[first][k];
+        }
+        if constexpr (kReferenceIntervals) {
           first_reference_low_rows[k] = reference_low_rows[first][k];
           first_reference_high_rows[k] = reference_high_rows[first][k];
         }
@@ -328,30 +334,32 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
         cv::v_uint8 reference[kChannels], first_reference_low[kChannels], first_reference_high[kChannels];
         for (int k = 0; k < kChannels; ++k) {
           reference[k] = cv::vx_setall_u8(reference_channel_rows[k][x]);
-          if constexpr (kBirchfieldTomasi) {
+          if constexpr (kReferenceIntervals) {
             first_reference_low[k] = cv::vx_setall_u8(first_reference_low_rows[k][x]);
             first_reference_high[k] = cv::vx_setall_u8(first_reference_high_rows[k][x]);
           }
         }
         // A camera's cost of the candidates at `offset`, summed over the channels: the absolute
-        // difference, or the smaller of the two distances of a pixel to the other's sampling
-        // interval (u8 subtraction saturates at 0, so the larger of the two signed gaps is the
-        // distance). The channels' costs add up within a byte (max_difference).
+        // difference, or the distance of the reference pixel to the candidate's sampling interval
+        // (u8 subtraction saturates at 0, so the larger of the two signed gaps is the distance),
+        // symmetric: the smaller of that and the candidate's distance to the reference's. The
+        // channels' costs add up within a byte (max_difference).
         const auto pixelCost = [&](const uchar* const* values, const uchar* const* lows, const uchar* const* highs,
                                    const cv::v_uint8* reference_lows, const cv::v_uint8* reference_highs,
                                    ptrdiff_t offset) __attribute__((always_inline)) {
           cv::v_uint8 cost;
           for (int k = 0; k < kChannels; ++k) {
-            const cv::v_uint8 candidate = cv::vx_load(values[k] + offset);
             cv::v_uint8 channel_cost;
-            if constexpr (kBirchfieldTomasi) {
-              const cv::v_uint8 to_candidate = cv::v_max(reference[k] - cv::vx_load(highs[k] + offset),
-                                                         cv::vx_load(lows[k] + offset) - reference[k]);
-              const cv::v_uint8 to_reference =
-                  cv::v_max(candidate - reference_highs[k], reference_lows[k] - candidate);
-              channel_cost = cv::v_min(to_candidate, to_reference);
+            if constexpr (kCost == PixelCost::kAbsoluteDifference) {
+              channel_cost = cv::v_absdiff(reference[k], cv::vx_load(values[k] + offset));
             } else {
-              channel_cost = cv::v_absdiff(reference[k], candidate);
+              channel_cost = cv::v_max(reference[k] - cv::vx_load(highs[k] + offset),
+                                       cv::vx_load(lows[k] + offset) - reference[k]);
+            }
+            if constexpr (kReferenceIntervals) {
+              const cv::v_uint8 candidate = cv::vx_load(values[k] + offset);
+              channel_cost =
+                  cv::v_min(channel_cost, cv::v_max(candidate - reference_highs[k], reference_lows[k] - candidate));
             }
             cost = k == 0 ? channel_cost : cv::v_add_wrap(cost, channel_cost);
           }
@@ -366,7 +374,7 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
           const auto otherCost = [&](int c) __attribute__((always_inline)) {
             cv::v_uint8 reference_low[kChannels], reference_high[kChannels];
             for (int k = 0; k < kChannels; ++k) {
-              if constexpr (kBirchfieldTomasi) {
+              if constexpr (kReferenceIntervals) {
                 reference_low[k] = cv::vx_setall_u8(reference_low_rows[c][k][x]);
                 reference_high[k] = cv::vx_setall_u8(reference_high_rows[c][k][x]);
               }
@@ -413,14 +421,14 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
       const CandidateSource& source = frame.sources[camera];
       for (int k = 0; k < channels; ++k) {
         const CandidateChannel& channel = source.channels[k];
-        if (birchfield_tomasi) {
+        if (reference_intervals) {
           reference_low_rows[c][k] = frame.reference[k].low[camera].ptr<uchar>(yy + margin) + margin;
           reference_high_rows[c][k] = frame.reference[k].high[camera].ptr<uchar>(yy + margin) + margin;
         }
         if (!source.tabulated()) {
           const ptrdiff_t row_offset = source.origin + yy * source.y_step;
-          candidates[c][k] = channel.values.buffer.data + row_offset;
-          if (birchfield_tomasi) {
+          if (candidate_values) candidates[c][k] = channel.values.buffer.data + row_offset;
+          if (candidate_intervals) {
             candidate_lows[c][k] = channel.low.buffer.data + row_offset;
             candidate_highs[c][k] = channel.high.buffer.data + row_offset;
           }
@@ -428,26 +436,36 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
         }
         uchar* const channel_tables =
             tables + static_cast<size_t>(c * images_per_camera + k * images_per_channel) * row_size;
-        candidates[c][k] = tabulate(source, channel.values.buffer, yy, channel_tables);
-        if (birchfield_tomasi) {
-          candidate_lows[c][k] = tabulate(source, channel.low.buffer, yy, channel_tables + row_size);
-          candidate_highs[c][k] = tabulate(source, channel.high.buffer, yy, channel_tables + 2 * row_size);
+        uchar* table = channel_tables;
+        if (candidate_values) {
+          candidates[c][k] = tabulate(source, channel.values.buffer, yy, table);
+          table += row_size;
+        }
+        if (candidate_intervals) {
+          candidate_lows[c][k] = tabulate(source, channel.low.buffer, yy, table);
+          candidate_highs[c][k] = tabulate(source, channel.high.buffer, yy, table + row_size);
         }
       }
       candidate_x_step[c] = source.tabulated() ? padded : source.x_step;
     }
     const int slot = (yy - (region.y0 - r)) % window;
-    const bool intensity = channels == 2;
-    if (birchfield_tomasi) {
-      if (intensity) {
-        enterGroups(slot, std::true_type{}, std::true_type{});
+    const auto enterWithCost = [&](auto cost_tag) {
+      if (channels == 2) {
+        enterGroups(slot, cost_tag, std::true_type{});
       } else {
-        enterGroups(slot, std::true_type{}, std::false_type{});
+        enterGroups(slot, cost_tag, std::false_type{});
       }
-    } else if (intensity) {
-      enterGroups(slot, std::false_type{}, std::true_type{});
-    } else {
-      enterGroups(slot, std::false_type{}, std::false_type{});
+    };
+    switch (frame.pixel_cost) {
+      case PixelCost::kAbsoluteDifference:
+        enterWithCost(std::integral_constant<PixelCost, PixelCost::kAbsoluteDifference>{});
+        break;
+      case PixelCost::kBirchfieldTomasi:
+        enterWithCost(std::integral_constant<PixelCost, PixelCost::kBirchfieldTomasi>{});
+        break;
+      case PixelCost::kBirchfieldTomasiOneSided:
+        enterWithCost(std::integral_constant<PixelCost, PixelCost::kBirchfieldTomasiOneSided>{});
+        break;
     }
   };
 

@@ -171,13 +171,15 @@ void prepareCandidateSource(const SecondaryCamera& camera, const PreparedFrame& 
   source.step_y = direct ? sy : 0;
   if (!direct) sx = sy = 0;  // tabulated: padded only
   for (CandidateChannel& channel : source.channels) {
-    arrangeImage(channel.image, sx, sy, margin, channel.values);
-    if (frame.birchfield_tomasi) {
+    if (frame.candidateValues()) arrangeImage(channel.image, sx, sy, margin, channel.values);
+    if (frame.candidateIntervals()) {
       arrangeImage(channel.image_low, sx, sy, margin, channel.low);
       arrangeImage(channel.image_high, sx, sy, margin, channel.high);
     }
   }
-  const ArrangedImage& arranged = source.channels.front().values;
+  // Every arranged image of the source has the same layout.
+  const CandidateChannel& first_channel = source.channels.front();
+  const ArrangedImage& arranged = frame.candidateValues() ? first_channel.values : first_channel.low;
   const ptrdiff_t step = static_cast<ptrdiff_t>(arranged.buffer.step);
   if (direct) {
     const ptrdiff_t x_sign = sx > 0 ? -1 : 1, y_sign = sy > 0 ? -1 : 1;
@@ -316,7 +318,7 @@ void prepareFrame(const StereoFrame& frame, const StereoOptions& options, const 
   prepared.subpixel = options.subpixel;
   prepared.second_best = options.second_best_ratio < 1.0;
   prepared.sum_scores = options.uniqueness_threshold < 1.0;
-  prepared.birchfield_tomasi = options.pixel_cost == PixelCost::kBirchfieldTomasi;
+  prepared.pixel_cost = options.pixel_cost;
   prepared.scanline = options.aggregation != CostAggregation::kWindow;
   prepared.paths_from_above = options.aggregation == CostAggregation::kSemiGlobal;
   prepared.scanline_p1 = options.scanline_p1;
@@ -344,8 +346,8 @@ void prepareFrame(const StereoFrame& frame, const StereoOptions& options, const 
           channel.image = interior(channel.padded, frame.reference.size(), margin);
           channelImage(frame.reference, k, channel.image);
           padInPlace(channel.image, margin, channel.padded);
-          channel.low.resize(prepared.birchfield_tomasi ? cameras : 0);
-          channel.high.resize(prepared.birchfield_tomasi ? cameras : 0);
+          channel.low.resize(prepared.referenceIntervals() ? cameras : 0);
+          channel.high.resize(prepared.referenceIntervals() ? cameras : 0);
           for (size_t c = 0; c < channel.low.size(); ++c) {
             const cv::Point direction = baselineDirection(frame.secondaries[c].camera);
             cv::Mat1b low = interior(channel.low[c], frame.reference.size(), margin);
@@ -363,7 +365,7 @@ void prepareFrame(const StereoFrame& frame, const StereoOptions& options, const 
       for (int k = 0; k < channels; ++k) {
         CandidateChannel& channel = source.channels[k];
         channelImage(frame.secondaries[view - 1].image, k, channel.image);
-        if (prepared.birchfield_tomasi) {
+        if (prepared.candidateIntervals()) {
           const cv::Point direction = baselineDirection(camera);
           samplingInterval(channel.image, direction.x, direction.y, channel.image_low, channel.image_high);
         }

@@ -22,7 +22,9 @@ const std::map<std::string, StereoBackend> kBackendNames{
 const std::map<std::string, Prefilter> kPrefilterNames{
     {"none", Prefilter::kNone}, {"xsobel", Prefilter::kXSobel}, {"log", Prefilter::kLog}};
 const std::map<std::string, PixelCost> kPixelCostNames{
-    {"absolute_difference", PixelCost::kAbsoluteDifference}, {"birchfield_tomasi", PixelCost::kBirchfieldTomasi}};
+    {"absolute_difference", PixelCost::kAbsoluteDifference},
+    {"birchfield_tomasi", PixelCost::kBirchfieldTomasi},
+    {"birchfield_tomasi_one_sided", PixelCost::kBirchfieldTomasiOneSided}};
 const std::map<std::string, CameraCombination> kCombinationNames{
     {"sum", CameraCombination::kSum}, {"best_half", CameraCombination::kBestHalf}};
 const std::map<std::string, CostAggregation> kAggregationNames{

@@ -22,7 +22,11 @@ enum class Prefilter { kNone, kXSobel, kLog };
 // half a pixel of the candidate along the baseline, and keeps the smaller of the two: a surface
 // sampled at a fractional offset, or an edge that falls between pixels, no longer looks like a
 // mismatch, which is where SAD errs at depth edges and on slanted textured surfaces.
-enum class PixelCost { kAbsoluteDifference, kBirchfieldTomasi };
+// kBirchfieldTomasiOneSided keeps only the first of the two: the reference pixel's distance to the
+// candidate's range (their d-bar). It forgives the secondary image's sampling, not the
+// reference's, and needs neither the reference's ranges nor the candidates' own values, so it
+// reads two bytes per candidate where the symmetric cost reads three and SAD one.
+enum class PixelCost { kAbsoluteDifference, kBirchfieldTomasi, kBirchfieldTomasiOneSided };
 
 // How the window scores of several secondary cameras make one score per candidate disparity.
 // kSum is the paper's (section 2.2, after Okutomi and Kanade). kBestHalf keeps only the
@@ -114,7 +118,7 @@ struct StereoOptions {
 
 // Loads and validates the [stereo] section; throws ConfigError "[stereo] key: why". Keys are the
 // member names above; enums as text: backend = sad | bm | sgbm, prefilter = none | xsobel | log,
-// pixel_cost = absolute_difference | birchfield_tomasi, combination = sum | best_half, aggregation = window | scanline | semiglobal, simd = auto | sse2 | avx2.
+// pixel_cost = absolute_difference | birchfield_tomasi | birchfield_tomasi_one_sided, combination = sum | best_half, aggregation = window | scanline | semiglobal, simd = auto | sse2 | avx2.
 StereoOptions loadStereoOptions(IniSection& section);
 
 // Bounds on the disparity range and the SAD window, pixels.

@@ -147,9 +147,13 @@ int windowSad(const std::vector<cv::Mat1b>& images, const std::vector<SecondaryC
         sad += std::abs(reference - candidate);
         continue;
       }
-      const auto [reference_low, reference_high] = samplingInterval(images[0], p.x, p.y, dx, dy);
       const auto [candidate_low, candidate_high] = samplingInterval(images[c + 1], q.x, q.y, dx, dy);
       const int to_candidate = std::max({0, reference - candidate_high, candidate_low - reference});
+      if (cost == PixelCost::kBirchfieldTomasiOneSided) {
+        sad += to_candidate;
+        continue;
+      }
+      const auto [reference_low, reference_high] = samplingInterval(images[0], p.x, p.y, dx, dy);
       const int to_reference = std::max({0, candidate - reference_high, reference_low - candidate});
       sad += std::min(to_candidate, to_reference);
     }
@@ -348,10 +352,11 @@ TEST(SadMatcherTest, MinimumDisparityOffsetsTheSearch) {
 }
 
 // Cameras on each axis and diagonal, interpolated ones (baselines of 2), byte sums of prefiltered
-// images, 32-bit scores and best half: the Birchfield-Tomasi costs the slow way.
-TEST(SadMatcherTest, BirchfieldTomasiScoresEqualTheSlowWay) {
+// images, 32-bit scores and best half: the Birchfield-Tomasi costs, symmetric and one-sided, the
+// slow way.
+void expectBirchfieldTomasiMatchesBruteForce(PixelCost cost) {
   StereoOptions options = matchOptions();
-  options.pixel_cost = PixelCost::kBirchfieldTomasi;
+  options.pixel_cost = cost;
   expectMatchesBruteForce({{1, 0}}, options);
   expectMatchesBruteForce({{-1, 0}, {0, -1}, {0, 1}}, options, Prefilter::kXSobel);
   expectMatchesBruteForce({{1, 1}, {-1, 1}, {1, -1}, {-1, -1}}, options);
@@ -363,9 +368,18 @@ TEST(SadMatcherTest, BirchfieldTomasiScoresEqualTheSlowWay) {
   expectMatchesBruteForce({{1, 0}, {0, 1}}, options);
 }
 
+TEST(SadMatcherTest, BirchfieldTomasiScoresEqualTheSlowWay) {
+  expectBirchfieldTomasiMatchesBruteForce(PixelCost::kBirchfieldTomasi);
+}
+
+TEST(SadMatcherTest, OneSidedBirchfieldTomasiScoresEqualTheSlowWay) {
+  expectBirchfieldTomasiMatchesBruteForce(PixelCost::kBirchfieldTomasiOneSided);
+}
+
 // A surface sampled half a pixel apart in the two images: between samples a piecewise-linear
-// image is exactly the average of its neighbours, so Birchfield-Tomasi finds no difference at the
-// true match, while SAD pays half the local slope at every pixel.
+// image is exactly the average of its neighbours, so Birchfield-Tomasi (either way: the reference
+// samples fall inside the candidates' intervals) finds no difference at the true match, while SAD
+// pays half the local slope at every pixel.
 TEST(SadMatcherTest, BirchfieldTomasiForgivesHalfPixelSampling) {
   constexpr int kWidth = 120, kHeight = 30;
   cv::RNG rng(8);
@@ -389,13 +403,14 @@ TEST(SadMatcherTest, BirchfieldTomasiForgivesHalfPixelSampling) {
   options.left_right_check = false;
   const StereoFrame frame{reference, {{secondary, {1, 0}}}};
   const SadMatch sad = SadMatcher(options).match(frame);
-  options.pixel_cost = PixelCost::kBirchfieldTomasi;
-  const SadMatch birchfield_tomasi = SadMatcher(options).match(frame);
   const cv::Rect interior(20, 5, 90, 20);
   const double sad_score = cv::mean(sad.best_score(interior))[0];
-  const double bt_score = cv::mean(birchfield_tomasi.best_score(interior))[0];
   EXPECT_GT(sad_score, 10.0);
-  EXPECT_LT(bt_score, 0.25 * sad_score);
+  for (PixelCost cost : {PixelCost::kBirchfieldTomasi, PixelCost::kBirchfieldTomasiOneSided}) {
+    options.pixel_cost = cost;
+    const SadMatch birchfield_tomasi = SadMatcher(options).match(frame);
+    EXPECT_LT(cv::mean(birchfield_tomasi.best_score(interior))[0], 0.25 * sad_score);
+  }
 }
 
 TEST(SadMatcherTest, BestHalfMatchesOccludedStripsThatTheSumGetsWrong) {
@@ -688,6 +703,8 @@ TEST(SadMatcherTest, BirchfieldTomasiWithSemiGlobalPathsEqualsTheSlowWay) {
   StereoOptions options = smallPathOptions(CostAggregation::kSemiGlobal);
   options.pixel_cost = PixelCost::kBirchfieldTomasi;
   expectPathsMatchBruteForce({{1, 0}}, options, 12, 70);
+  options.pixel_cost = PixelCost::kBirchfieldTomasiOneSided;
+  expectPathsMatchBruteForce({{-1, 0}}, options, 0, 58);
 }
 
 // The grey levels at a quarter scale added to the x-Sobel costs: one camera and several, direct
@@ -702,6 +719,8 @@ TEST(SadMatcherTest, IntensityTermAddsTheQuarterScaleGreyLevelsTheSlowWay) {
   options.combination = CameraCombination::kSum;
   options.pixel_cost = PixelCost::kBirchfieldTomasi;
   expectMatchesBruteForce({{1, 0}, {-2, 0}}, options, Prefilter::kXSobel);
+  options.pixel_cost = PixelCost::kBirchfieldTomasiOneSided;
+  expectMatchesBruteForce({{-1, 0}, {2, 0}, {0, 1}}, options, Prefilter::kXSobel);
   options.window = 15;  // 225 * (62 + 64) * 2 cameras > 32767
   options.max_disparity = 10;
   expectMatchesBruteForce({{1, 0}, {0, 1}}, options, Prefilter::kXSobel);
@@ -713,6 +732,8 @@ TEST(SadMatcherTest, IntensityTermWithPathsEqualsTheSlowWay) {
   options.max_disparity = 12;
   options.intensity_term = true;
   options.aggregation = CostAggregation::kScanline;
+  expectPathsMatchBruteForce({{1, 0}}, options, 12, 70, Prefilter::kXSobel);
+  options.pixel_cost = PixelCost::kBirchfieldTomasiOneSided;
   expectPathsMatchBruteForce({{1, 0}}, options, 12, 70, Prefilter::kXSobel);
   options.aggregation = CostAggregation::kSemiGlobal;
   options.pixel_cost = PixelCost::kBirchfieldTomasi;
@@ -728,6 +749,11 @@ TEST(SadMatcherTest, PartialCandidatesMatchTheEdgeBandTheSlowWay) {
   options.partial_candidates = true;
   expectPathsMatchBruteForce({{1, 0}}, options, 0, 70);
   expectPathsMatchBruteForce({{-1, 0}}, options, 0, 70);
+  // Off the image the candidates' sampling intervals are those of the border pixel.
+  options.pixel_cost = PixelCost::kBirchfieldTomasiOneSided;
+  expectPathsMatchBruteForce({{1, 0}}, options, 0, 70);
+  expectPathsMatchBruteForce({{-1, 0}}, options, 0, 70);
+  options.pixel_cost = PixelCost::kAbsoluteDifference;
   // Columns 0-3 miss even the nearest candidate; the margin covers the band's farthest reads.
   options.min_disparity = 4;
   options.aggregation = CostAggregation::kSemiGlobal;
@@ -874,6 +900,12 @@ TEST(SadMatcherTest, Avx2GivesTheSameMatchAsSse2) {
       {"intensity term, Birchfield-Tomasi, scanline, partial candidates, interpolated", {{0.5, 0}},
        [](StereoOptions& o) {
          o.intensity_term = true, o.pixel_cost = PixelCost::kBirchfieldTomasi,
+         o.aggregation = CostAggregation::kScanline, o.partial_candidates = true, o.max_disparity = 40;
+       }},
+      {"one-sided Birchfield-Tomasi, intensity term, scanline, partial candidates, interpolated and diagonal",
+       {{0.5, 0}, {1, 1}},
+       [](StereoOptions& o) {
+         o.intensity_term = true, o.pixel_cost = PixelCost::kBirchfieldTomasiOneSided,
          o.aggregation = CostAggregation::kScanline, o.partial_candidates = true, o.max_disparity = 40;
        }},
       {"intensity term, trinocular, partial candidates", {{-1, 0}, {0, -1}},

@@ -85,7 +85,7 @@ TEST(StereoOptionsTest, BadValuesNameTheKey) {
   EXPECT_NE(errorOf("texture_threshold = -1\n").find("[stereo] texture_threshold"), std::string::npos);
   EXPECT_NE(errorOf("prefilter_cap = 200\n").find("[stereo] prefilter_cap"), std::string::npos);
   EXPECT_NE(errorOf("aggregation = sgm\n").find("[stereo] aggregation: expected scanline | semiglobal | window"), std::string::npos);
-  EXPECT_NE(errorOf("pixel_cost = census\n").find("[stereo] pixel_cost: expected absolute_difference | birchfield_tomasi"),
+  EXPECT_NE(errorOf("pixel_cost = census\n").find("[stereo] pixel_cost: expected absolute_difference | birchfield_tomasi | birchfield_tomasi_one_sided"),
             std::string::npos);
   EXPECT_NE(errorOf("aggregation = semiglobal\nwindow = 231\n").find("[stereo] window: must be at most 229"),
             std::string::npos);
