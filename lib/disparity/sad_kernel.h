@@ -42,7 +42,8 @@ struct ArrangedImage {
 constexpr int kMaxChannels = 2;
 
 // One channel of a secondary camera: its image and sampling interval, and the arrangements of
-// those the pixel cost reads (PreparedFrame::candidateValues, candidateIntervals).
+// those the pixel cost reads (PreparedFrame::candidateValues, candidateIntervals; the values
+// only where CandidateSource::row_intervals).
 struct CandidateChannel {
   cv::Mat1b image, image_low, image_high;
   ArrangedImage values, low, high;
@@ -55,6 +56,10 @@ struct CandidateSource {
   ptrdiff_t y_step = 0;
   std::vector<BilinearTap> taps;  // one per candidate; empty for direct sources
   int step_x = 0, step_y = 0;     // direct sources: the whole-pixel step per disparity
+  // A direct camera along the rows (step_y = 0) whose candidates' sampling intervals the loop takes
+  // from each arranged row of values as it enters the row: nothing is prepared but the values,
+  // and the loop reads the intervals from a row buffer instead of two images.
+  bool row_intervals = false;
 
   bool tabulated() const { return !taps.empty(); }
 };

@@ -69,6 +69,16 @@ CV_ALWAYS_INLINE cv::v_int32x8 byteGroupSums(const cv::v_uint8x32& v) {
 }
 #endif
 
+// (a + b + 1) >> 1 per byte (pavgb; OpenCV 4.6's universal intrinsics have no average).
+CV_ALWAYS_INLINE cv::v_uint8x16 roundedAverage(const cv::v_uint8x16& a, const cv::v_uint8x16& b) {
+  return cv::v_uint8x16(_mm_avg_epu8(a.val, b.val));
+}
+#if CV_SIMD256
+CV_ALWAYS_INLINE cv::v_uint8x32 roundedAverage(const cv::v_uint8x32& a, const cv::v_uint8x32& b) {
+  return cv::v_uint8x32(_mm256_avg_epu8(a.val, b.val));
+}
+#endif
+
 // Scanline paths in bytes (PreparedFrame::path_shift): twice the candidates of 16-bit lanes per
 // instruction. OpenCV's 8-bit + and - saturate, so a path that reaches 255 stays there instead of
 // wrapping; the window scores are scaled so that only candidates far worse than any match the
@@ -165,6 +175,33 @@ CV_ALWAYS_INLINE int firstLaneEqual(const Acc* scores, int chunks, const typenam
   return 0;
 }
 
+// Birchfield and Tomasi's sampling interval along a row of an arranged image whose interior is
+// [margin, margin + width) and whose margins replicate the border (as samplingInterval in
+// sad_matcher.cc, then padded): each interior pixel's lowest and highest of its value and the
+// values halfway (rounded up: pavgb) to its two neighbours; each margin pixel's, its nearest
+// border pixel's.
+inline void samplingIntervalRow(const uchar* row, int width, int margin, uchar* low, uchar* high) {
+  const int end = margin + width;
+  int i = margin;
+  for (; i + kByteLanes <= end; i += kByteLanes) {
+    const cv::v_uint8 value = cv::vx_load(row + i);
+    const cv::v_uint8 half_before = roundedAverage(value, cv::vx_load(row + i - 1));
+    const cv::v_uint8 half_after = roundedAverage(value, cv::vx_load(row + i + 1));
+    cv::v_store(low + i, cv::v_min(value, cv::v_min(half_before, half_after)));
+    cv::v_store(high + i, cv::v_max(value, cv::v_max(half_before, half_after)));
+  }
+  for (; i < end; ++i) {
+    const int value = row[i];
+    const int half_before = (value + row[i - 1] + 1) >> 1, half_after = (value + row[i + 1] + 1) >> 1;
+    low[i] = static_cast<uchar>(std::min({value, half_before, half_after}));
+    high[i] = static_cast<uchar>(std::max({value, half_before, half_after}));
+  }
+  std::fill(low, low + margin, low[margin]);
+  std::fill(high, high + margin, high[margin]);
+  std::fill(low + end, low + end + margin, low[end - 1]);
+  std::fill(high + end, high + end + margin, high[end - 1]);
+}
+
 template <typename Acc, bool kPathsFromAbove, bool kBytePaths>
 void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch& out) {
   static_assert(!kBytePaths || (std::is_same_v<Acc, int16_t> && !kPathsFromAbove),
@@ -223,6 +260,14 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
   const int images_per_channel = (candidate_values ? 1 : 0) + (candidate_intervals ? 2 : 0);
   const int images_per_camera = channels * images_per_channel;
   uchar* const tables = scratch(table_buffer, images_per_camera * cameras * row_size);
+  // Cameras whose candidates' sampling intervals are taken row by row: each row's, per channel.
+  thread_local std::vector<uchar> interval_row_buffer;
+  size_t interval_row_size = 0;
+  for (int camera : region.cameras) {
+    const CandidateSource& source = frame.sources[camera];
+    if (source.row_intervals) interval_row_size = std::max(interval_row_size, source.channels.front().values.buffer.step[0]);
+  }
+  uchar* const interval_rows = scratch(interval_row_buffer, 2 * channels * cameras * interval_row_size);
   // Semi-global: the paths that come down from the row above (from the upper left, above and the
   // upper right) to every pixel of this row and of the previous one, and each path's lowest entry.
   constexpr int kDirectionsFromAbove = 3;
@@ -291,7 +336,10 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
 
   // The pixel costs of reference row yy against every candidate, into the ring slot of the row,
   // updating the column sums by (entering row - leaving row).
-  const auto enterGroups = [&](int slot, auto cost_tag, auto intensity_tag) {
+  // One camera whose costs fit a byte (a binocular rig, unless raw grey levels and the intensity
+  // term add up past 255) compiles to a loop without the other cameras' machinery.
+  const auto enterGroups = [&](int slot, auto cost_tag, auto intensity_tag, auto one_camera_tag) {
+    constexpr bool kOneCamera = decltype(one_camera_tag)::value;
     constexpr PixelCost kCost = decltype(cost_tag)::value;
     constexpr bool kCandidateValues = kCost != PixelCost::kBirchfieldTomasiOneSided;
     constexpr bool kCandidateIntervals = kCost != PixelCost::kAbsoluteDifference;
@@ -382,11 +430,11 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
             return pixelCost(candidates[c], candidate_lows[c], candidate_highs[c], reference_low, reference_high,
                              x * candidate_x_step[c] + b);
           };
-          if (group_byte_costs) {
+          if (kOneCamera || group_byte_costs) {
             // The costs of every camera of the group add up within a byte: widen once.
             cv::v_uint8 total = own;
-            for (int c = first + 1; c < last; ++c) {
-              total = cv::v_add_wrap(total, otherCost(c));
+            if constexpr (!kOneCamera) {
+              for (int c = first + 1; c < last; ++c) total = cv::v_add_wrap(total, otherCost(c));
             }
             uchar* const ring_lanes = byte_ring_row + static_cast<size_t>(xe) * count + b;
             Lanes::widen(cv::vx_load(ring_lanes), leaving);
@@ -425,6 +473,19 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
           reference_low_rows[c][k] = frame.reference[k].low[camera].ptr<uchar>(yy + margin) + margin;
           reference_high_rows[c][k] = frame.reference[k].high[camera].ptr<uchar>(yy + margin) + margin;
         }
+        if (source.row_intervals) {
+          // The candidates lie along row yy + margin of the arranged values.
+          const cv::Mat1b& values = channel.values.buffer;
+          const uchar* const row = values.ptr<uchar>(yy + margin);
+          const ptrdiff_t row_offset = source.origin + yy * source.y_step - (row - values.data);
+          uchar* const low = interval_rows + static_cast<size_t>(2 * (c * channels + k)) * interval_row_size;
+          uchar* const high = low + interval_row_size;
+          samplingIntervalRow(row, values.cols - 2 * margin, margin, low, high);
+          if (candidate_values) candidates[c][k] = row + row_offset;
+          candidate_lows[c][k] = low + row_offset;
+          candidate_highs[c][k] = high + row_offset;
+          continue;
+        }
         if (!source.tabulated()) {
           const ptrdiff_t row_offset = source.origin + yy * source.y_step;
           if (candidate_values) candidates[c][k] = channel.values.buffer.data + row_offset;
@@ -450,10 +511,16 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
     }
     const int slot = (yy - (region.y0 - r)) % window;
     const auto enterWithCost = [&](auto cost_tag) {
-      if (channels == 2) {
-        enterGroups(slot, cost_tag, std::true_type{});
+      if (cameras == 1 && byte_costs) {
+        if (channels == 2) {
+          enterGroups(slot, cost_tag, std::true_type{}, std::true_type{});
+        } else {
+          enterGroups(slot, cost_tag, std::false_type{}, std::true_type{});
+        }
+      } else if (channels == 2) {
+        enterGroups(slot, cost_tag, std::true_type{}, std::false_type{});
       } else {
-        enterGroups(slot, cost_tag, std::false_type{});
+        enterGroups(slot, cost_tag, std::false_type{}, std::false_type{});
       }
     };
     switch (frame.pixel_cost) {

@@ -158,7 +158,8 @@ cv::Point baselineDirection(const SecondaryCamera& camera) {
 }
 
 // Fills `source` for one secondary camera from its channels' images (and, for Birchfield-Tomasi,
-// their sampling intervals), reusing its buffers when the frame size is unchanged.
+// their sampling intervals unless the loop takes them row by row), reusing its buffers when the
+// frame size is unchanged.
 void prepareCandidateSource(const SecondaryCamera& camera, const PreparedFrame& frame, CandidateSource& source) {
   const cv::Mat1b& first_image = source.channels.front().image;
   const int width = first_image.cols, height = first_image.rows, margin = frame.margin;
@@ -169,17 +170,22 @@ void prepareCandidateSource(const SecondaryCamera& camera, const PreparedFrame& 
   source.taps.clear();
   source.step_x = direct ? sx : 0;
   source.step_y = direct ? sy : 0;
+  source.row_intervals = direct && sy == 0 && frame.candidateIntervals();
   if (!direct) sx = sy = 0;  // tabulated: padded only
+  const bool interval_images = frame.candidateIntervals() && !source.row_intervals;
+  const bool values = frame.candidateValues() || source.row_intervals;
   for (CandidateChannel& channel : source.channels) {
-    if (frame.candidateValues()) arrangeImage(channel.image, sx, sy, margin, channel.values);
-    if (frame.candidateIntervals()) {
+    if (values) arrangeImage(channel.image, sx, sy, margin, channel.values);
+    if (interval_images) {
+      const cv::Point direction = baselineDirection(camera);
+      samplingInterval(channel.image, direction.x, direction.y, channel.image_low, channel.image_high);
       arrangeImage(channel.image_low, sx, sy, margin, channel.low);
       arrangeImage(channel.image_high, sx, sy, margin, channel.high);
     }
   }
   // Every arranged image of the source has the same layout.
   const CandidateChannel& first_channel = source.channels.front();
-  const ArrangedImage& arranged = frame.candidateValues() ? first_channel.values : first_channel.low;
+  const ArrangedImage& arranged = values ? first_channel.values : first_channel.low;
   const ptrdiff_t step = static_cast<ptrdiff_t>(arranged.buffer.step);
   if (direct) {
     const ptrdiff_t x_sign = sx > 0 ? -1 : 1, y_sign = sy > 0 ? -1 : 1;
@@ -365,10 +371,6 @@ void prepareFrame(const StereoFrame& frame, const StereoOptions& options, const 
       for (int k = 0; k < channels; ++k) {
         CandidateChannel& channel = source.channels[k];
         channelImage(frame.secondaries[view - 1].image, k, channel.image);
-        if (prepared.candidateIntervals()) {
-          const cv::Point direction = baselineDirection(camera);
-          samplingInterval(channel.image, direction.x, direction.y, channel.image_low, channel.image_high);
-        }
       }
       prepareCandidateSource(camera, prepared, source);
     }
