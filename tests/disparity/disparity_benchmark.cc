@@ -4,9 +4,12 @@
 // time does not depend on the content); one thread unless the name says Threads (all cores).
 //   - OurPaper:     binocular SAD, 7x7, texture + quality-of-match tests (the paper's path)
 //   - OurImproved:  ini/stereo_real_images.ini as shipped (the accuracy configuration of
-//                   docs/stereo.md: 5x5 Birchfield-Tomasi, scanline aggregation, distinctiveness
-//                   test, left-right check from the same scores), with the range set per size
-//   - OurAbsoluteDifference: the same with its faster pixel cost (pixel_cost =
+//                   docs/stereo.md: 5x5 one-sided Birchfield-Tomasi, scanline aggregation,
+//                   distinctiveness test, left-right check from the same scores), with the range
+//                   set per size
+//   - OurBirchfieldTomasi: the same with its most accurate pixel cost (pixel_cost =
+//                   birchfield_tomasi, intensity_term = true)
+//   - OurAbsoluteDifference: the same with the paper's pixel cost (pixel_cost =
 //                   absolute_difference, second_best_ratio = 0.7)
 //   - OurSemiGlobal: the same with aggregation = semiglobal (five paths, as SGBM's default mode)
 //   - OurTrinocular: the paper's path with the L-shaped Triclops head (left and top cameras)
@@ -90,6 +93,14 @@ void BM_OurImproved(benchmark::State& state) {
   runOurs(state, binocular(width), improvedOptions(width), 1);
 }
 
+void BM_OurBirchfieldTomasi(benchmark::State& state) {
+  const int width = static_cast<int>(state.range(0));
+  StereoOptions options = improvedOptions(width);
+  options.pixel_cost = PixelCost::kBirchfieldTomasi;
+  options.intensity_term = true;
+  runOurs(state, binocular(width), options, 1);
+}
+
 void BM_OurAbsoluteDifference(benchmark::State& state) {
   const int width = static_cast<int>(state.range(0));
   StereoOptions options = improvedOptions(width);
@@ -162,6 +173,7 @@ BENCHMARK(BM_OurPaperSse2) STEREO_SIZES;
 BENCHMARK(BM_OurImprovedSse2) STEREO_SIZES;
 BENCHMARK(BM_OurTrinocular) STEREO_SIZES;
 BENCHMARK(BM_OpenCvStereoSgbm) STEREO_SIZES;
+BENCHMARK(BM_OurBirchfieldTomasi) STEREO_SIZES;
 BENCHMARK(BM_OurAbsoluteDifference) STEREO_SIZES;
 BENCHMARK(BM_OurSemiGlobal) STEREO_SIZES;
 BENCHMARK(BM_OpenCvStereoBmThreads) STEREO_SIZES->UseRealTime();
