@@ -336,10 +336,13 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
 
   // The pixel costs of reference row yy against every candidate, into the ring slot of the row,
   // updating the column sums by (entering row - leaving row).
-  // One camera whose costs fit a byte (a binocular rig, unless raw grey levels and the intensity
-  // term add up past 255) compiles to a loop without the other cameras' machinery.
-  const auto enterGroups = [&](int slot, auto cost_tag, auto intensity_tag, auto one_camera_tag) {
-    constexpr bool kOneCamera = decltype(one_camera_tag)::value;
+  // A group of one or two cameras whose costs fit a byte (a binocular or L-shaped rig, each camera
+  // of best-half, unless raw grey levels and the intensity term add up past 255) compiles to a
+  // loop that holds the cameras' pointers in locals and has none of the other cameras' machinery
+  // (kHeldCameras; 0: any group).
+  const auto enterGroups = [&](int slot, auto cost_tag, auto intensity_tag, auto held_cameras_tag) {
+    constexpr int kHeldCameras = decltype(held_cameras_tag)::value;
+    constexpr int kLocalCameras = kHeldCameras == 0 ? 1 : kHeldCameras;
     constexpr PixelCost kCost = decltype(cost_tag)::value;
     constexpr bool kCandidateValues = kCost != PixelCost::kBirchfieldTomasiOneSided;
     constexpr bool kCandidateIntervals = kCost != PixelCost::kAbsoluteDifference;
@@ -347,29 +350,33 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
     constexpr int kChannels = decltype(intensity_tag)::value ? 2 : 1;
     for (int g = 0; g < groups; ++g) {
       const int first = groups == 1 ? 0 : g, last = groups == 1 ? cameras : g + 1;
-      // Locals, so that the compiler keeps them in registers across the stores below (the arrays
-      // indexed by camera could alias them and would be read again after every store).
-      const uchar* first_candidates[kChannels];
-      const uchar* first_lows[kChannels];
-      const uchar* first_highs[kChannels];
-      const uchar* first_reference_low_rows[kChannels];
-      const uchar* first_reference_high_rows[kChannels];
-      // Each set by enterRow only for the costs that read it.
-      for (int k = 0; k < kChannels; ++k) {
-        if constexpr (kCandidateValues) first_candidates[k] = candidates[first][k];
-        if constexpr (kCandidateIntervals) {
-          first_lows[k] = candidate_lows[first][k];
-          first_highs[k] = candidate_highs[first][k];
-        }
-        if constexpr (kReferenceIntervals) {
-          first_reference_low_rows[k] = reference_low_rows[first][k];
-          first_reference_high_rows[k] = reference_high_rows[first][k];
+      // The group's first cameras' pointers in locals, so that the compiler keeps them in registers
+      // across the stores below (the arrays indexed by camera could alias them and would be read
+      // again after every store). Each set by enterRow only for the costs that read it.
+      const uchar* local_candidates[kLocalCameras][kChannels];
+      const uchar* local_lows[kLocalCameras][kChannels];
+      const uchar* local_highs[kLocalCameras][kChannels];
+      const uchar* local_reference_low_rows[kLocalCameras][kChannels];
+      const uchar* local_reference_high_rows[kLocalCameras][kChannels];
+      ptrdiff_t local_x_step[kLocalCameras];
+      for (int h = 0; h < kLocalCameras; ++h) {
+        const int c = first + h;
+        local_x_step[h] = candidate_x_step[c];
+        for (int k = 0; k < kChannels; ++k) {
+          if constexpr (kCandidateValues) local_candidates[h][k] = candidates[c][k];
+          if constexpr (kCandidateIntervals) {
+            local_lows[h][k] = candidate_lows[c][k];
+            local_highs[h][k] = candidate_highs[c][k];
+          }
+          if constexpr (kReferenceIntervals) {
+            local_reference_low_rows[h][k] = reference_low_rows[c][k];
+            local_reference_high_rows[h][k] = reference_high_rows[c][k];
+          }
         }
       }
       const uchar* reference_channel_rows[kChannels];
       for (int k = 0; k < kChannels; ++k) reference_channel_rows[k] = reference_rows[k];
       const bool group_byte_costs = byte_costs;
-      const ptrdiff_t first_x_step = candidate_x_step[first];
       const size_t ring_row_offset = (static_cast<size_t>(g) * window + slot) * row_size;
       uchar* const byte_ring_row = ring + ring_row_offset;
       Acc* const ring_row = reinterpret_cast<Acc*>(ring) + ring_row_offset;
@@ -377,14 +384,17 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
       const int count = padded;
       for (int xe = 0; xe < nx; ++xe) {
         const int x = x0 - r + xe;
-        // The reference's sampling interval along the first camera's baseline in locals; the
+        // The reference's sampling interval along the local cameras' baselines in locals; the
         // other cameras' (several in a group) are broadcast where they are used.
-        cv::v_uint8 reference[kChannels], first_reference_low[kChannels], first_reference_high[kChannels];
+        cv::v_uint8 reference[kChannels], local_reference_low[kLocalCameras][kChannels],
+            local_reference_high[kLocalCameras][kChannels];
         for (int k = 0; k < kChannels; ++k) {
           reference[k] = cv::vx_setall_u8(reference_channel_rows[k][x]);
-          if constexpr (kReferenceIntervals) {
-            first_reference_low[k] = cv::vx_setall_u8(first_reference_low_rows[k][x]);
-            first_reference_high[k] = cv::vx_setall_u8(first_reference_high_rows[k][x]);
+          for (int h = 0; h < kLocalCameras; ++h) {
+            if constexpr (kReferenceIntervals) {
+              local_reference_low[h][k] = cv::vx_setall_u8(local_reference_low_rows[h][k][x]);
+              local_reference_high[h][k] = cv::vx_setall_u8(local_reference_high_rows[h][k][x]);
+            }
           }
         }
         // A camera's cost of the candidates at `offset`, summed over the channels: the absolute
@@ -413,12 +423,16 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
           }
           return cost;
         };
-        const ptrdiff_t own_offset = x * first_x_step;
+        ptrdiff_t local_offset[kLocalCameras];
+        for (int h = 0; h < kLocalCameras; ++h) local_offset[h] = x * local_x_step[h];
         Acc* const sum_entry = sums + static_cast<size_t>(xe) * count;
         for (int b = 0; b < count; b += kByteLanes) {
           Vec entering[kVectorsPerBytes], leaving[kVectorsPerBytes];
-          const cv::v_uint8 own =
-              pixelCost(first_candidates, first_lows, first_highs, first_reference_low, first_reference_high, own_offset + b);
+          const auto localCost = [&](int h) __attribute__((always_inline)) {
+            return pixelCost(local_candidates[h], local_lows[h], local_highs[h], local_reference_low[h],
+                             local_reference_high[h], local_offset[h] + b);
+          };
+          const cv::v_uint8 own = localCost(0);
           const auto otherCost = [&](int c) __attribute__((always_inline)) {
             cv::v_uint8 reference_low[kChannels], reference_high[kChannels];
             for (int k = 0; k < kChannels; ++k) {
@@ -430,12 +444,13 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
             return pixelCost(candidates[c], candidate_lows[c], candidate_highs[c], reference_low, reference_high,
                              x * candidate_x_step[c] + b);
           };
-          if (kOneCamera || group_byte_costs) {
+          if (kHeldCameras > 0 || group_byte_costs) {
             // The costs of every camera of the group add up within a byte: widen once.
             cv::v_uint8 total = own;
-            if constexpr (!kOneCamera) {
+            if constexpr (kHeldCameras == 0) {
               for (int c = first + 1; c < last; ++c) total = cv::v_add_wrap(total, otherCost(c));
             }
+            for (int h = 1; h < kHeldCameras; ++h) total = cv::v_add_wrap(total, localCost(h));
             uchar* const ring_lanes = byte_ring_row + static_cast<size_t>(xe) * count + b;
             Lanes::widen(cv::vx_load(ring_lanes), leaving);
             cv::v_store(ring_lanes, total);
@@ -510,17 +525,22 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
       candidate_x_step[c] = source.tabulated() ? padded : source.x_step;
     }
     const int slot = (yy - (region.y0 - r)) % window;
+    // Every group of one camera (one camera, or best-half), or one group of two, in bytes.
+    const int held_cameras = !byte_costs ? 0 : groups == cameras ? 1 : cameras == 2 ? 2 : 0;
     const auto enterWithCost = [&](auto cost_tag) {
-      if (cameras == 1 && byte_costs) {
+      const auto enterWithChannels = [&](auto held_cameras_tag) {
         if (channels == 2) {
-          enterGroups(slot, cost_tag, std::true_type{}, std::true_type{});
+          enterGroups(slot, cost_tag, std::true_type{}, held_cameras_tag);
         } else {
-          enterGroups(slot, cost_tag, std::false_type{}, std::true_type{});
+          enterGroups(slot, cost_tag, std::false_type{}, held_cameras_tag);
         }
-      } else if (channels == 2) {
-        enterGroups(slot, cost_tag, std::true_type{}, std::false_type{});
+      };
+      if (held_cameras == 1) {
+        enterWithChannels(std::integral_constant<int, 1>{});
+      } else if (held_cameras == 2) {
+        enterWithChannels(std::integral_constant<int, 2>{});
       } else {
-        enterGroups(slot, cost_tag, std::false_type{}, std::false_type{});
+        enterWithChannels(std::integral_constant<int, 0>{});
       }
     };
     switch (frame.pixel_cost) {

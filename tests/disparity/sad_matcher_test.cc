@@ -323,6 +323,7 @@ TEST(SadMatcherTest, ScoresEqualSumOfCameraSads) {
 // x-Sobel differences are at most 62: those of up to four cameras add up within a byte, which
 // the loop uses to widen them once.
 TEST(SadMatcherTest, ScoresEqualSumOfCameraSadsOfThePrefilteredImages) {
+  expectMatchesBruteForce({{-1, 0}, {0, -1}}, matchOptions(), Prefilter::kXSobel);  // the Triclops L
   expectMatchesBruteForce({{-1, 0}, {0, -1}, {1, 0}}, matchOptions(), Prefilter::kXSobel);
   expectMatchesBruteForce({{1, 1}, {-1, 1}, {1, -1}, {-1, -1}}, matchOptions(), Prefilter::kXSobel);
 }
