@@ -72,6 +72,11 @@ struct ReferenceChannel {
   std::vector<cv::Mat1b> low, high;
 };
 
+// What a pixel cost reads: the candidates' values, their sampling intervals, the reference's.
+constexpr bool readsCandidateValues(PixelCost cost) { return cost != PixelCost::kBirchfieldTomasiOneSided; }
+constexpr bool readsCandidateIntervals(PixelCost cost) { return cost != PixelCost::kAbsoluteDifference; }
+constexpr bool readsReferenceIntervals(PixelCost cost) { return cost == PixelCost::kBirchfieldTomasi; }
+
 struct PreparedFrame {
   std::vector<ReferenceChannel> reference;  // one per channel
   std::vector<CandidateSource> sources;
@@ -96,10 +101,9 @@ struct PreparedFrame {
   // x - d of the secondary image, -1 if x + d; 0 = no reverse match (SadMatch::reverse_disparity).
   int reverse_sign = 0;
 
-  // What the pixel cost reads: the candidates' values, their sampling intervals, the reference's.
-  bool candidateValues() const { return pixel_cost != PixelCost::kBirchfieldTomasiOneSided; }
-  bool candidateIntervals() const { return pixel_cost != PixelCost::kAbsoluteDifference; }
-  bool referenceIntervals() const { return pixel_cost == PixelCost::kBirchfieldTomasi; }
+  bool candidateValues() const { return readsCandidateValues(pixel_cost); }
+  bool candidateIntervals() const { return readsCandidateIntervals(pixel_cost); }
+  bool referenceIntervals() const { return readsReferenceIntervals(pixel_cost); }
 };
 
 // A rectangle of reference pixels whose candidates, at every disparity, are inside the images of

@@ -344,9 +344,9 @@ void matchRegion(const PreparedFrame& frame, const MatchRegion& region, SadMatch
     constexpr int kHeldCameras = decltype(held_cameras_tag)::value;
     constexpr int kLocalCameras = kHeldCameras == 0 ? 1 : kHeldCameras;
     constexpr PixelCost kCost = decltype(cost_tag)::value;
-    constexpr bool kCandidateValues = kCost != PixelCost::kBirchfieldTomasiOneSided;
-    constexpr bool kCandidateIntervals = kCost != PixelCost::kAbsoluteDifference;
-    constexpr bool kReferenceIntervals = kCost == PixelCost::kBirchfieldTomasi;
+    constexpr bool kCandidateValues = readsCandidateValues(kCost);
+    constexpr bool kCandidateIntervals = readsCandidateIntervals(kCost);
+    constexpr bool kReferenceIntervals = readsReferenceIntervals(kCost);
     constexpr int kChannels = decltype(intensity_tag)::value ? 2 : 1;
     for (int g = 0; g < groups; ++g) {
       const int first = groups == 1 ? 0 : g, last = groups == 1 ? cameras : g + 1;
