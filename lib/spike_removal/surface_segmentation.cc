@@ -1,10 +1,45 @@
 #include "spike_removal/surface_segmentation.h"
 
+#include <opencv2/core/hal/intrin.hpp>
+
+#include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "disparity/disparity_image.h"
 
 namespace stereonav {
+namespace {
+
+constexpr int kWordBits = 64;
+
+inline void setBit(std::vector<uint64_t>& bits, int x, bool on) {
+  bits[x / kWordBits] |= static_cast<uint64_t>(on) << (x % kWordBits);
+}
+
+// Whether any bit in columns [begin, end) is set.
+inline bool anyInRange(const std::vector<uint64_t>& bits, int begin, int end) {
+  if (begin >= end) return false;
+  const int first = begin / kWordBits, last = (end - 1) / kWordBits;
+  const uint64_t first_mask = ~uint64_t{0} << (begin % kWordBits);
+  const uint64_t last_mask = ~uint64_t{0} >> (kWordBits - 1 - (end - 1) % kWordBits);
+  if (first == last) return (bits[first] & first_mask & last_mask) != 0;
+  if (bits[first] & first_mask) return true;
+  for (int word = first + 1; word < last; ++word) {
+    if (bits[word]) return true;
+  }
+  return (bits[last] & last_mask) != 0;
+}
+
+// The first column at or after `from` whose bit is clear; bits past the row's end are clear.
+inline int firstClear(const std::vector<uint64_t>& bits, int from) {
+  int word = from / kWordBits;
+  uint64_t clear = ~bits[word] & (~uint64_t{0} << (from % kWordBits));
+  while (clear == 0) clear = ~bits[++word];
+  return word * kWordBits + __builtin_ctzll(clear);
+}
+
+}  // namespace
 
 SurfaceSegmentation::SurfaceSegmentation(const SurfaceSegmentationOptions& options)
     : options_(options) {}
@@ -32,87 +67,104 @@ int32_t SurfaceSegmentation::join(int32_t label, int32_t neighbour_label) {
   return b;
 }
 
-// Along a row, consecutive connected pixels form a run that shares one label. Within a run the
-// row above mostly holds one label too, so remembering the last label already joined skips almost
-// every union-find call; and pixels are counted per run, not with a store per pixel.
-struct SurfaceSegmentation::RowScan {
-  int32_t* labels = nullptr;  // this row's labels
-  int32_t label = 0;          // the current run's label; 0 while the pixel has none yet
-  int32_t last_joined = 0;    // a label of the row above already joined with `label`
-  int32_t pending = 0;        // pixels of the current run not yet added to region_size_
-  int32_t next_label = 1;
-};
-
-template <bool kEightConnected, bool kHasLeft, bool kHasUp, bool kHasUpRight>
-inline void SurfaceSegmentation::labelPixel(const float* row, const float* row_above,
-                                            const int32_t* labels_above, int x, RowScan& scan) {
-  const float d = row[x];
-  // An invalid neighbour is +inf, so |d - inf| <= max_difference is false: no separate test.
-  const float max_difference = options_.max_difference;
-  const auto connected = [d, max_difference](float neighbour) {
-    return std::abs(d - neighbour) <= max_difference;
-  };
-  if (!(kHasLeft && isValidDisparity(d) && connected(row[x - 1]))) {
-    // The run ends here: credit its pixels before starting another.
-    region_size_[scan.label] += scan.pending;
-    scan.pending = 0;
-    scan.label = 0;
-    scan.last_joined = 0;
-    if (!isValidDisparity(d)) {
-      scan.labels[x] = 0;
-      return;
+template <bool kEightConnected>
+void SurfaceSegmentation::labelRow(int y, int width, int32_t& next_label) {
+  // An above run [begin, end) can touch this row's columns from begin - reach to end - 1 + reach.
+  constexpr int kReach = kEightConnected ? 1 : 0;
+  size_t above = y > 0 ? row_first_run_[y - 1] : 0;
+  const size_t above_end = row_first_run_[y];
+  const int words = (width + kWordBits - 1) / kWordBits;
+  for (int word = 0; word < words; ++word) {
+    // A run starts at a valid pixel not joined to its left neighbour.
+    uint64_t starts = masks_.valid[word] & ~masks_.left[word];
+    while (starts) {
+      const int begin = word * kWordBits + __builtin_ctzll(starts);
+      starts &= starts - 1;
+      const int end = std::min(firstClear(masks_.left, begin + 1), width);
+      while (above < above_end && runs_[above].end + kReach <= begin) ++above;
+      int32_t label = 0, last_joined = 0;
+      // The next run may touch the last above run this one touches, so `above` stays.
+      for (size_t j = above; j < above_end && runs_[j].begin < end + kReach; ++j) {
+        const Run& neighbour = runs_[j];
+        if (neighbour.label == last_joined) continue;
+        bool touches = anyInRange(masks_.up, std::max(begin, neighbour.begin), std::min(end, neighbour.end));
+        if (kEightConnected && !touches) {
+          touches = anyInRange(masks_.up_left, std::max(begin, neighbour.begin + 1), std::min(end, neighbour.end + 1)) ||
+                    anyInRange(masks_.up_right, std::max(begin, neighbour.begin - 1), std::min(end, neighbour.end - 1));
+        }
+        if (!touches) continue;
+        label = join(label, neighbour.label);
+        last_joined = neighbour.label;
+      }
+      if (label == 0) {
+        label = next_label++;
+        parent_[label] = label;
+        region_size_[label] = 0;
+      }
+      region_size_[label] += end - begin;
+      runs_.push_back({begin, end, label});
     }
   }
-  const auto joinAbove = [this, &scan](int32_t above) {
-    if (above == scan.last_joined) return;
-    scan.last_joined = above;
-    scan.label = join(scan.label, above);
-  };
-  if (kHasUp) {
-    if (kEightConnected && kHasLeft && connected(row_above[x - 1])) joinAbove(labels_above[x - 1]);
-    if (connected(row_above[x])) joinAbove(labels_above[x]);
-    if (kEightConnected && kHasUpRight && connected(row_above[x + 1])) {
-      joinAbove(labels_above[x + 1]);
-    }
-  }
-  if (scan.label == 0) {
-    scan.label = scan.next_label++;
-    parent_[scan.label] = scan.label;
-    region_size_[scan.label] = 0;
-  }
-  ++scan.pending;
-  scan.labels[x] = scan.label;
 }
 
 template <bool kEightConnected>
 int32_t SurfaceSegmentation::labelSurfaces(const cv::Mat1f& disparity) {
   const int width = disparity.cols;
-  RowScan scan;
-  region_size_[0] = 0;  // collects the (ignored) count of "no run"
+  const size_t words = (width + kWordBits - 1) / kWordBits;
+  for (std::vector<uint64_t>* bits : {&masks_.valid, &masks_.left, &masks_.up, &masks_.up_left, &masks_.up_right}) {
+    bits->resize(words);
+  }
+  runs_.clear();
+  row_first_run_.resize(disparity.rows + 1);
+  int32_t next_label = 1;
+  // An invalid pixel is +inf, so |d - neighbour| <= max_difference is false when either is
+  // invalid (inf - inf is NaN): one comparison tells both validity and closeness.
+  const float max_difference = options_.max_difference;
+  const auto close = [max_difference](float a, float b) { return std::abs(a - b) <= max_difference; };
   for (int y = 0; y < disparity.rows; ++y) {
     const float* row = disparity[y];
-    scan.labels = labels_.data() + static_cast<size_t>(y) * width;
-    if (y == 0) {
-      labelPixel<kEightConnected, false, false, false>(row, nullptr, nullptr, 0, scan);
-      for (int x = 1; x < width; ++x) {
-        labelPixel<kEightConnected, true, false, false>(row, nullptr, nullptr, x, scan);
-      }
-      continue;
+    const float* row_above = y > 0 ? disparity[y - 1] : nullptr;
+    for (std::vector<uint64_t>* bits : {&masks_.valid, &masks_.left, &masks_.up, &masks_.up_left, &masks_.up_right}) {
+      std::fill(bits->begin(), bits->end(), uint64_t{0});
     }
-    const float* row_above = disparity[y - 1];
-    const int32_t* labels_above = scan.labels - width;
-    if (width == 1) {
-      labelPixel<kEightConnected, false, true, false>(row, row_above, labels_above, 0, scan);
-      continue;
+    const auto maskPixel = [&](int x) {
+      setBit(masks_.valid, x, isValidDisparity(row[x]));
+      setBit(masks_.left, x, x > 0 && close(row[x], row[x - 1]));
+      if (!row_above) return;
+      setBit(masks_.up, x, close(row[x], row_above[x]));
+      if (!kEightConnected) return;
+      setBit(masks_.up_left, x, x > 0 && close(row[x], row_above[x - 1]));
+      setBit(masks_.up_right, x, x + 1 < width && close(row[x], row_above[x + 1]));
+    };
+    // Lane groups start at multiples of the lane count, so none straddles a word; the first group
+    // and the tail (reading x - 1 and x + 1) are done one pixel at a time.
+    int x = 0;
+#if CV_SIMD
+    constexpr int kLanes = cv::v_float32::nlanes;
+    const int first_vector = std::min(kLanes, width);
+    for (; x < first_vector; ++x) maskPixel(x);
+    const cv::v_float32 invalid = cv::vx_setall_f32(kInvalidDisparity), limit = cv::vx_setall_f32(max_difference);
+    const auto closeLanes = [&limit](const cv::v_float32& a, const cv::v_float32& b) {
+      return static_cast<uint64_t>(cv::v_signmask(cv::v_abs(a - b) <= limit));
+    };
+    for (; x + kLanes < width; x += kLanes) {
+      const cv::v_float32 d = cv::vx_load(row + x);
+      const int word = x / kWordBits, shift = x % kWordBits;
+      masks_.valid[word] |= static_cast<uint64_t>(cv::v_signmask(d != invalid)) << shift;
+      masks_.left[word] |= closeLanes(d, cv::vx_load(row + x - 1)) << shift;
+      if (!row_above) continue;
+      masks_.up[word] |= closeLanes(d, cv::vx_load(row_above + x)) << shift;
+      if (!kEightConnected) continue;
+      masks_.up_left[word] |= closeLanes(d, cv::vx_load(row_above + x - 1)) << shift;
+      masks_.up_right[word] |= closeLanes(d, cv::vx_load(row_above + x + 1)) << shift;
     }
-    labelPixel<kEightConnected, false, true, true>(row, row_above, labels_above, 0, scan);
-    for (int x = 1; x < width - 1; ++x) {
-      labelPixel<kEightConnected, true, true, true>(row, row_above, labels_above, x, scan);
-    }
-    labelPixel<kEightConnected, true, true, false>(row, row_above, labels_above, width - 1, scan);
+#endif
+    for (; x < width; ++x) maskPixel(x);
+    row_first_run_[y] = runs_.size();
+    labelRow<kEightConnected>(y, width, next_label);
   }
-  region_size_[scan.label] += scan.pending;
-  return scan.next_label;
+  row_first_run_[disparity.rows] = runs_.size();
+  return next_label;
 }
 
 void SurfaceSegmentation::classifyLabels(int32_t label_count) {
@@ -121,7 +173,6 @@ void SurfaceSegmentation::classifyLabels(int32_t label_count) {
     parent_[label] = parent_[parent_[label]];
     if (parent_[label] != label) region_size_[parent_[label]] += region_size_[label];
   }
-  reject_label_[0] = 0;
   for (int32_t label = 1; label < label_count; ++label) {
     reject_label_[label] = region_size_[parent_[label]] < options_.min_region_pixels ? 255 : 0;
   }
@@ -130,9 +181,9 @@ void SurfaceSegmentation::classifyLabels(int32_t label_count) {
 void SurfaceSegmentation::apply(cv::Mat1f& disparity, cv::Mat1b& rejected) {
   const size_t pixels = disparity.total();
   rejected.create(disparity.size());
+  rejected.setTo(0);
   if (pixels == 0) return;
-  if (labels_.size() < pixels) {
-    labels_.resize(pixels);
+  if (parent_.size() < pixels + 1) {
     // Without any connection every pixel is its own surface: at most one label per pixel.
     parent_.resize(pixels + 1);
     region_size_.resize(pixels + 1);
@@ -143,16 +194,14 @@ void SurfaceSegmentation::apply(cv::Mat1f& disparity, cv::Mat1b& rejected) {
                                                          : labelSurfaces<true>(disparity);
   classifyLabels(label_count);
 
-  const int width = disparity.cols;
   for (int y = 0; y < disparity.rows; ++y) {
     float* row = disparity[y];
     uint8_t* mask = rejected[y];
-    const int32_t* labels = labels_.data() + static_cast<size_t>(y) * width;
-    for (int x = 0; x < width; ++x) {
-      // Written without branches: which pixels go is as unpredictable as the spikes.
-      const uint8_t reject = reject_label_[labels[x]];
-      row[x] = reject ? kInvalidDisparity : row[x];
-      mask[x] = reject;
+    for (size_t i = row_first_run_[y]; i < row_first_run_[y + 1]; ++i) {
+      const Run& run = runs_[i];
+      if (!reject_label_[run.label]) continue;
+      std::fill(row + run.begin, row + run.end, kInvalidDisparity);
+      std::memset(mask + run.begin, 255, run.end - run.begin);
     }
   }
 }

@@ -16,8 +16,9 @@ namespace stereonav {
 // invalidated. A thin structure (a pole, a table edge) survives because it is joined to the larger
 // surface it stands on, which median and morphological filters cannot know (section 4.1).
 //
-// Two-pass union-find labelling: linear in the number of pixels. The buffers are kept between
-// frames, so a frame of an unchanged size allocates nothing.
+// Two-pass union-find labelling of runs (a row's consecutive joined pixels): linear in the number
+// of pixels, with the per-pixel work done as vector comparisons into bit masks, and the rest per
+// run. The buffers are kept between frames, so a frame of an unchanged size allocates nothing.
 class SurfaceSegmentation {
  public:
   explicit SurfaceSegmentation(const SurfaceSegmentationOptions& options);
@@ -27,22 +28,33 @@ class SurfaceSegmentation {
   void apply(cv::Mat1f& disparity, cv::Mat1b& rejected);
 
  private:
-  // First pass: provisional labels in labels_, label equivalences in parent_, pixels per
-  // provisional label in region_size_. Returns the number of labels used (including 0).
+  struct Run {
+    int32_t begin, end;  // columns [begin, end) of one row
+    int32_t label;
+  };
+  // Which pixels of a row join which neighbours, one bit per pixel (bit x % 64 of word x / 64).
+  struct RowMasks {
+    std::vector<uint64_t> valid, left, up, up_left, up_right;
+  };
+
+  // First pass: the runs of every row in runs_ (row y's from row_first_run_[y]), label
+  // equivalences in parent_, pixels per label in region_size_. Returns the number of labels used
+  // (including 0, which none has).
   template <bool kEightConnected>
   int32_t labelSurfaces(const cv::Mat1f& disparity);
-  struct RowScan;  // the first pass's state while it walks along one row
-  template <bool kEightConnected, bool kHasLeft, bool kHasUp, bool kHasUpRight>
-  void labelPixel(const float* row, const float* row_above, const int32_t* labels_above, int x,
-                  RowScan& scan);
+  // Labels the runs of row y, joining each to the runs of row y - 1 it touches.
+  template <bool kEightConnected>
+  void labelRow(int y, int width, int32_t& next_label);
   int32_t join(int32_t label, int32_t neighbour_label);
   int32_t findRoot(int32_t label);
   // Second pass: marks every label whose whole surface is too small in reject_label_.
   void classifyLabels(int32_t label_count);
 
   SurfaceSegmentationOptions options_;
-  std::vector<int32_t> labels_;  // per pixel, row-major; 0 = invalid pixel
-  std::vector<int32_t> parent_;  // union-find forest over labels; parent_[l] <= l
+  RowMasks masks_;
+  std::vector<Run> runs_;
+  std::vector<size_t> row_first_run_;  // rows + 1 entries
+  std::vector<int32_t> parent_;        // union-find forest over labels; parent_[l] <= l
   std::vector<int32_t> region_size_;
   std::vector<uint8_t> reject_label_;  // 255 = the label's surface is too small, else 0
 };

@@ -4,6 +4,7 @@
 #include <opencv2/calib3d.hpp>
 
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "pole_scene.h"
@@ -158,17 +159,46 @@ cv::Mat1f floodFillReference(const cv::Mat1f& input, const SurfaceSegmentationOp
   return output;
 }
 
+void expectFloodFillResult(const cv::Mat1f& input, const SurfaceSegmentationOptions& options,
+                           const std::string& what) {
+  const cv::Mat1f expected = floodFillReference(input, options);
+  const cv::Mat1f actual = segmented(input, options);
+  ASSERT_EQ(cv::norm(actual != expected, cv::NORM_L1), 0.0)
+      << what << ", " << options.connectivity << "-connected";
+}
+
 TEST(SurfaceSegmentationTest, MatchesFloodFillOnRandomImages) {
   cv::RNG rng(7);
   for (int trial = 0; trial < 20; ++trial) {
     cv::Mat1f input(37, 53);
     for (float& d : input) d = rng.uniform(0.0, 1.0) < 0.1 ? kInvalidDisparity : rng.uniform(0, 4);
     for (const int connectivity : {4, 8}) {
-      const auto options = segmentationOptions(rng.uniform(2, 30), connectivity, 1.0f);
-      const cv::Mat1f expected = floodFillReference(input, options);
-      const cv::Mat1f actual = segmented(input, options);
-      ASSERT_EQ(cv::norm(actual != expected, cv::NORM_L1), 0.0)
-          << "trial " << trial << ", " << connectivity << "-connected";
+      expectFloodFillResult(input, segmentationOptions(rng.uniform(2, 30), connectivity, 1.0f),
+                            "trial " + std::to_string(trial));
+    }
+  }
+}
+
+TEST(SurfaceSegmentationTest, MatchesFloodFillOnSmoothImagesOfAnyWidth) {
+  // Random walks along the rows make long surfaces whose rows span many pixels, across the
+  // widths where a row's pixels fill whole 64-bit words, and one more or less.
+  cv::RNG rng(11);
+  for (const int width : {1, 2, 7, 63, 64, 65, 127, 128, 129, 300}) {
+    for (int trial = 0; trial < 4; ++trial) {
+      cv::Mat1f input(23, width);
+      for (int y = 0; y < input.rows; ++y) {
+        float d = static_cast<float>(rng.uniform(0, 6));
+        for (int x = 0; x < width; ++x) {
+          const double event = rng.uniform(0.0, 1.0);
+          if (event < 0.03) d += rng.uniform(2, 4);  // a step that splits the row
+          else if (event < 0.2) d += rng.uniform(-1, 2) * 0.5f;
+          input(y, x) = rng.uniform(0.0, 1.0) < 0.05 ? kInvalidDisparity : d;
+        }
+      }
+      for (const int connectivity : {4, 8}) {
+        expectFloodFillResult(input, segmentationOptions(rng.uniform(2, 60), connectivity, 1.0f),
+                              "width " + std::to_string(width) + ", trial " + std::to_string(trial));
+      }
     }
   }
 }
