@@ -31,7 +31,8 @@ inline bool anyInRange(const std::vector<uint64_t>& bits, int begin, int end) {
   return (bits[last] & last_mask) != 0;
 }
 
-// The first column at or after `from` whose bit is clear; bits past the row's end are clear.
+// The first column at or after `from` whose bit is clear. Bits past the row's end are clear,
+// and a word past its last one (RowMasks) ends the search in a row whose every bit is set.
 inline int firstClear(const std::vector<uint64_t>& bits, int from) {
   int word = from / kWordBits;
   uint64_t clear = ~bits[word] & (~uint64_t{0} << (from % kWordBits));
@@ -112,7 +113,7 @@ int32_t SurfaceSegmentation::labelSurfaces(const cv::Mat1f& disparity) {
   const int width = disparity.cols;
   const size_t words = (width + kWordBits - 1) / kWordBits;
   for (std::vector<uint64_t>* bits : {&masks_.valid, &masks_.left, &masks_.up, &masks_.up_left, &masks_.up_right}) {
-    bits->resize(words);
+    bits->resize(words + 1);
   }
   runs_.clear();
   row_first_run_.resize(disparity.rows + 1);

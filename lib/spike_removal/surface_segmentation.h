@@ -32,7 +32,8 @@ class SurfaceSegmentation {
     int32_t begin, end;  // columns [begin, end) of one row
     int32_t label;
   };
-  // Which pixels of a row join which neighbours, one bit per pixel (bit x % 64 of word x / 64).
+  // Which pixels of a row join which neighbours, one bit per pixel (bit x % 64 of word x / 64),
+  // and one more word, always clear.
   struct RowMasks {
     std::vector<uint64_t> valid, left, up, up_left, up_right;
   };

@@ -203,6 +203,17 @@ TEST(SurfaceSegmentationTest, MatchesFloodFillOnSmoothImagesOfAnyWidth) {
   }
 }
 
+TEST(SurfaceSegmentationTest, KeepsWholeRowsThatFillTheirLastWord) {
+  // One surface whose rows join from the first pixel to the last, at widths that fill whole
+  // 64-bit words: a row's run ends where the row does.
+  for (const int width : {64, 128}) {
+    cv::Mat1f input(5, width, 3.0f);
+    input(2, width - 1) = kInvalidDisparity;
+    EXPECT_EQ(validCount(segmented(input, segmentationOptions(5 * width - 1))), 5 * width - 1) << width;
+    EXPECT_EQ(validCount(segmented(input, segmentationOptions(5 * width))), 0) << width;
+  }
+}
+
 TEST(SurfaceSegmentationTest, FourConnectedResultEqualsOpenCvFilterSpeckles) {
   const cv::Mat1f input = noisyTsukubaDisparity(3);
   constexpr int kMinRegion = 100;
