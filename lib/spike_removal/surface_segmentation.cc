@@ -112,9 +112,6 @@ template <bool kEightConnected>
 int32_t SurfaceSegmentation::labelSurfaces(const cv::Mat1f& disparity) {
   const int width = disparity.cols;
   const size_t words = (width + kWordBits - 1) / kWordBits;
-  for (std::vector<uint64_t>* bits : {&masks_.valid, &masks_.left, &masks_.up, &masks_.up_left, &masks_.up_right}) {
-    bits->resize(words + 1);
-  }
   runs_.clear();
   row_first_run_.resize(disparity.rows + 1);
   int32_t next_label = 1;
@@ -125,9 +122,7 @@ int32_t SurfaceSegmentation::labelSurfaces(const cv::Mat1f& disparity) {
   for (int y = 0; y < disparity.rows; ++y) {
     const float* row = disparity[y];
     const float* row_above = y > 0 ? disparity[y - 1] : nullptr;
-    for (std::vector<uint64_t>* bits : {&masks_.valid, &masks_.left, &masks_.up, &masks_.up_left, &masks_.up_right}) {
-      std::fill(bits->begin(), bits->end(), uint64_t{0});
-    }
+    masks_.clearRow(words);
     const auto maskPixel = [&](int x) {
       setBit(masks_.valid, x, isValidDisparity(row[x]));
       setBit(masks_.left, x, x > 0 && close(row[x], row[x - 1]));

@@ -36,6 +36,10 @@ class SurfaceSegmentation {
   // and one more word, always clear.
   struct RowMasks {
     std::vector<uint64_t> valid, left, up, up_left, up_right;
+    // All bits clear, for a row of `words` words.
+    void clearRow(size_t words) {
+      for (std::vector<uint64_t>* bits : {&valid, &left, &up, &up_left, &up_right}) bits->assign(words + 1, 0);
+    }
   };
 
   // First pass: the runs of every row in runs_ (row y's from row_first_run_[y]), label
