@@ -41,6 +41,10 @@ DisparityInterval bodyVolumeInterval(double k, double mount_z, const ProjectionO
   return interval.lowest <= interval.highest ? interval : kEmpty;
 }
 
+// "Mostly matches nothing": three pixels in four, as spike removal leaves a few stray matches on
+// a flat surface.
+constexpr double kUnmatchedShare = 0.75;
+
 }  // namespace
 
 ColumnProjector::ColumnProjector(const CameraRig& rig, const ProjectionOptions& options)
@@ -69,6 +73,19 @@ ColumnProjector::ColumnProjector(const CameraRig& rig, const ProjectionOptions& 
       const DisparityInterval interval = bodyVolumeInterval(k, mount_z, options);
       lowest_(y, x) = static_cast<float>(interval.lowest);
       highest_(y, x) = static_cast<float>(interval.highest);
+    }
+  }
+  if (options.near_floor_m > 0.0 && mount_z > 0.0) {
+    // The floor in row y lies at disparity -k / mount_z (where k < 0: the row looks down).
+    const auto floor_depth = [&](int y, int x) { return rig.depthForDisparity(-height_factor_(y, x) / mount_z); };
+    near_floor_top_row_.assign(camera.width, camera.height);
+    const int bottom = camera.height - 1;
+    for (int x = 0; x < camera.width; ++x) {
+      if (height_factor_(bottom, x) >= 0.0f) continue;  // no floor in sight: no rows to check
+      const double deepest = floor_depth(bottom, x) + options.near_floor_m;
+      int top = bottom;
+      while (top > 0 && height_factor_(top - 1, x) < 0.0f && floor_depth(top - 1, x) <= deepest) --top;
+      near_floor_top_row_[x] = top;
     }
   }
 }
@@ -127,6 +144,10 @@ DisparityScan ColumnProjector::project(const cv::Mat1f& disparity) const {
       }
     }
   }
+  if (!near_floor_top_row_.empty()) {
+    scan.column_blind.resize(width);
+    for (int x = 0; x < width; ++x) scan.column_blind[x] = blind(disparity, x);
+  }
   const auto min_disparity = static_cast<float>(min_reading_disparity_);
   for (int x = 0; x < width; ++x) {
     if (best_row[x] < 0 || best[x] < min_disparity) {
@@ -135,6 +156,15 @@ DisparityScan ColumnProjector::project(const cv::Mat1f& disparity) const {
     }
   }
   return scan;
+}
+
+bool ColumnProjector::blind(const cv::Mat1f& disparity, int x) const {
+  int rows = 0, unmatched = 0;
+  for (int y = near_floor_top_row_[x]; y < disparity.rows; ++y) {
+    ++rows;
+    unmatched += !isValidDisparity(disparity(y, x));
+  }
+  return rows > 0 && unmatched >= kUnmatchedShare * rows;
 }
 
 bool ColumnProjector::unmatchedFoot(const cv::Mat1f& disparity, int x, float& foot_disparity, int& foot_row) const {
@@ -155,9 +185,7 @@ bool ColumnProjector::unmatchedFoot(const cv::Mat1f& disparity, int x, float& fo
   if (foot < floor_end_min_disparity_) return false;
   // The rows above it that would show a surface standing there, from the floor up to
   // floor_clearance_m, must mostly match nothing: a gap in the floor's texture has the floor
-  // again (or a farther surface) right above it. Three in four, as spike removal leaves a few
-  // stray matches on a flat surface.
-  constexpr double kUnmatchedShare = 0.75;
+  // again (or a farther surface) right above it.
   int rows = 0, unmatched = 0;
   for (int y = floor_end - 1; y >= 0 && mount_z_ + height_factor_(y, x) / foot <= floor_clearance_; --y) {
     ++rows;

@@ -18,9 +18,14 @@ struct DisparityScan {
   // into floor-plane geometry (a virtual laser scan) needs it. Empty when the scan was not made
   // by ColumnProjector.
   std::vector<int> column_row;
+  // Per column, 1 where it saw (almost) nothing of the nearest floor the camera can see
+  // (ProjectionOptions::near_floor_m): whatever stands in front of the robot there, nearer than
+  // that floor, the matcher could not see. Empty when not checked.
+  std::vector<unsigned char> column_blind;
 
   int columns() const { return static_cast<int>(column_disparity.size()); }
   bool valid(int column) const { return isValidDisparity(column_disparity[column]); }
+  bool blind(int column) const { return !column_blind.empty() && column_blind[column] != 0; }
 };
 
 // Figure 5d: depth along the optical axis, Z = f B / d, per column; +inf where the column saw no

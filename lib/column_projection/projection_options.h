@@ -29,12 +29,20 @@ struct ProjectionOptions {
   // floor's texture fades below what the matcher finds, and its end is no foot. 0 = off (the
   // paper's projection).
   double floor_end_max_depth_m = 0.0;
+  // Below the nearest floor the camera can see, it sees nothing; a surface the matcher cannot
+  // match (flat paint, or one nearer than the largest disparity searched) standing there fills
+  // the image's bottom rows and leaves no trace in the scan. So a column whose rows that would
+  // show the floor, from its nearest visible point to this much deeper (depth Z, metres), mostly
+  // match nothing is blind (DisparityScan::column_blind): it cannot tell that the ground right
+  // ahead is clear. The robot must not drive where it cannot see (issue 18); the scan's reading
+  // is left as it is, as nothing tells how near the surface is. 0 = off.
+  double near_floor_m = 0.0;
   // The virtual laser scan's maxRange: obstacles farther than this are left out of it.
   double scan_max_range_m = 10.0;
 };
 
 // Section [projection]. Keys: floor_clearance_m, robot_height_m, surface_band_px, max_depth_m,
-// floor_end_max_depth_m, scan_max_range_m.
+// floor_end_max_depth_m, near_floor_m, scan_max_range_m.
 // Throws ConfigError on bad values.
 ProjectionOptions loadProjectionOptions(IniSection& section);
 

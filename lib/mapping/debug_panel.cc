@@ -91,6 +91,13 @@ cv::Mat3b DebugPanelRenderer::columnStripTile(const DisparityScan& scan) const {
   cv::Mat3b tile;
   cv::resize(row, tile, cv::Size(scan.columns() * image_scale_, kStripHeight), 0, 0,
              cv::INTER_NEAREST);
+  // Blind columns (ProjectionOptions::near_floor_m): the strip's lower third black.
+  const int blind_top = kStripHeight * 2 / 3;
+  for (int column = 0; column < scan.columns(); ++column) {
+    if (scan.blind(column)) {
+      tile(cv::Rect(column * image_scale_, blind_top, image_scale_, kStripHeight - blind_top)).setTo(cv::Vec3b(0, 0, 0));
+    }
+  }
   return tile;
 }
 
@@ -184,7 +191,7 @@ cv::Mat3b DebugPanelRenderer::render(const DisparityScanner& scanner, size_t fra
   paste(panel, reference, a + cv::Point(0, kLabelHeight));
   putLabel(panel, "(b) disparity; white invalid, magenta spikes", b);
   paste(panel, disparityTile(scanner), b + cv::Point(0, kLabelHeight));
-  putLabel(panel, "(c) column max disparity (body volume)", c);
+  putLabel(panel, "(c) column max disparity; black below: blind", c);
   paste(panel, columnStripTile(scan), c + cv::Point(0, kLabelHeight));
   char depth_label[64];
   std::snprintf(depth_label, sizeof depth_label, "(d) depth per column (red: beyond %.0f m)", range_m_);
@@ -205,6 +212,11 @@ cv::Mat3b DebugPanelRenderer::render(const DisparityScanner& scanner, size_t fra
                                                scan.column_disparity.end(), isValidDisparity)),
                 scan.columns());
   putLabel(panel, caption, c - cv::Point(image_width + kGap, -kLabelHeight));
+  if (!scan.column_blind.empty()) {
+    std::snprintf(caption, sizeof caption, "blind columns %d",
+                  static_cast<int>(std::count(scan.column_blind.begin(), scan.column_blind.end(), 1)));
+    putLabel(panel, caption, c - cv::Point(image_width + kGap, -2 * kLabelHeight));
+  }
   const cv::Point scale_origin = d - cv::Point(image_width + kGap, -2 * kLabelHeight);
   for (int x = 0; x < image_width; ++x) {
     const float disparity = static_cast<float>(

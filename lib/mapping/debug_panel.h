@@ -20,7 +20,8 @@ namespace stereonav {
 //   (b) the disparity image, colour-mapped (blue far .. red near), invalid pixels white and the
 //       surfaces spike removal rejected magenta (figure 6d shows them black);
 //   (c) the maximum disparity of each column inside the robot's body volume, as a strip
-//       aligned with (b)'s columns;
+//       aligned with (b)'s columns, its lower third black under blind columns (columns that
+//       see none of the nearest floor, ProjectionOptions::near_floor_m);
 //   (d) depth per column, metres (figure 5d);
 //   (e) this frame's OCC (black) and CLEAR (white) regions seen from above, unknown grey, with
 //       the camera at the bottom looking up (figure 5e).

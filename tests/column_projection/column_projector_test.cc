@@ -191,6 +191,42 @@ TEST(ColumnProjectorTest, ALowUnmatchedBoxBeforeATexturedWallIsReadAtItsFoot) {
   EXPECT_EQ(scan.column_disparity[90], 5.0f);  // beside the box, the wall
 }
 
+ProjectionOptions withNearFloor(double near_floor_m) {
+  ProjectionOptions options = bodyVolume(0.95);
+  options.near_floor_m = near_floor_m;
+  return options;
+}
+
+// In levelCorridor() the nearest floor the camera sees is the bottom row's, Z = 50 / (100 - 50)
+// = 1 m; with near_floor_m = 0.25 the rows to check are those whose floor lies at Z <= 1.25 m,
+// 50 / (y - 50) <= 1.25: rows 90..100, eleven of them.
+TEST(ColumnProjectorTest, AColumnThatMatchesNoneOfTheNearestFloorIsBlind) {
+  const CameraRig rig = testRig(0, 0, 0, 0);
+  cv::Mat1f disparity = levelCorridor();
+  EXPECT_TRUE(ColumnProjector(rig, bodyVolume(0.95)).project(disparity).column_blind.empty());  // off
+  disparity(cv::Rect(30, 92, 11, 9)).setTo(kInvalidDisparity);   // 9 of the 11 rows: blind
+  disparity(cv::Rect(60, 95, 11, 6)).setTo(kInvalidDisparity);   // 6 of 11: a gap in the texture
+  disparity(cv::Rect(120, 0, 5, 101)).setTo(kInvalidDisparity);  // nothing at all
+  const DisparityScan scan = ColumnProjector(rig, withNearFloor(0.25)).project(disparity);
+  ASSERT_EQ(scan.column_blind.size(), 201u);
+  for (int x = 0; x < 201; ++x) {
+    const bool blind = (x >= 30 && x <= 40) || (x >= 120 && x <= 124);
+    EXPECT_EQ(scan.blind(x), blind) << "column " << x;
+  }
+  // The readings are those of the paper's projection: a blind column tells nothing of depth.
+  EXPECT_EQ(scan.column_disparity[35], 5.0f);
+  EXPECT_FALSE(scan.valid(122));
+  // With a deeper band (Z <= 2: rows 75..100, 26 rows) the same 9 unmatched rows are a gap.
+  EXPECT_FALSE(ColumnProjector(rig, withNearFloor(1.0)).project(disparity).blind(35));
+}
+
+TEST(ColumnProjectorTest, NoColumnIsBlindWithoutFloorInSight) {
+  // Tilted 60 degrees up, the camera sees no floor at all: nothing to miss.
+  const CameraRig rig = testRig(0, 0, 0, -60);
+  const DisparityScan scan = ColumnProjector(rig, withNearFloor(0.25)).project(cv::Mat1f(101, 201, kInvalidDisparity));
+  for (int x = 0; x < 201; ++x) EXPECT_FALSE(scan.blind(x)) << "column " << x;
+}
+
 TEST(ColumnProjectorTest, RejectsImageOfTheWrongSize) {
   const ColumnProjector projector(testRig(0, 0, 0, 0), bodyVolume(1.0));
   EXPECT_THROW(projector.project(cv::Mat1f(120, 160, 5.0f)), std::invalid_argument);

@@ -70,6 +70,30 @@ TEST_F(DebugPanelTest, SmallImagesAreEnlargedToStayReadable) {
   EXPECT_EQ(small_renderer.render(scanner, 0, {}).size(), renderer.render(full_scanner, 0, {}).size());
 }
 
+TEST_F(DebugPanelTest, BlindColumnsAreMarkedBlackUnderTheColumnStrip) {
+  // The scene's floor has no texture: every column whose bottom rows show it is blind.
+  StageTimes times;
+  DisparityScanner unchecked(testing::testRig(), options_.stereo, options_.spike_removal, options_.projection);
+  unchecked.scan(frame_, times);
+  const cv::Mat3b plain = DebugPanelRenderer(options_, testing::testRig()).render(unchecked, 0, {});
+  options_.projection.near_floor_m = 0.3;
+  DisparityScanner scanner(testing::testRig(), options_.stereo, options_.spike_removal, options_.projection);
+  scanner.scan(frame_, times);
+  int blind = 0;
+  for (int column = 0; column < scanner.lastScan().columns(); ++column) blind += scanner.lastScan().blind(column);
+  ASSERT_GT(blind, 0);
+  const cv::Mat3b marked = DebugPanelRenderer(options_, testing::testRig()).render(scanner, 0, {});
+  ASSERT_EQ(marked.size(), plain.size());
+  // The lower third of the 28-pixel strip (10 rows) of each blind column (one panel pixel wide at
+  // scale 1) turns black, and nothing else does (the caption also counts them).
+  const cv::Vec3b black(0, 0, 0);
+  int turned_black = 0;
+  for (int y = 0; y < marked.rows; ++y) {
+    for (int x = 0; x < marked.cols; ++x) turned_black += marked(y, x) == black && plain(y, x) != black;
+  }
+  EXPECT_EQ(turned_black, blind * 10);
+}
+
 TEST_F(DebugPanelTest, SavedPanelReadsBackUnchanged) {
   DisparityScanner scanner(testing::testRig(), options_.stereo, options_.spike_removal, options_.projection);
   StageTimes times;
