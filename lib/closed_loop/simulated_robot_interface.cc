@@ -57,9 +57,13 @@ bool CSimulatedRobotInterface::stop(bool /*is_emergency_stop*/) {
 }
 
 void CSimulatedRobotInterface::setSensedObstacles(const mrpt::obs::CObservation2DRangeScan& scan,
+                                                  const std::vector<mrpt::math::TPoint2D>& blind_points,
                                                   const mrpt::poses::CPose2D& pose) {
   scan_points_.clear();
   scan_points_.loadFromRangeScan(scan);
+  for (const mrpt::math::TPoint2D& point : blind_points) {
+    scan_points_.insertPoint(static_cast<float>(point.x), static_cast<float>(point.y), 0.0f);
+  }
   scan_pose_ = pose;
   scan_time_ = scan.timestamp;
   has_scan_ = true;

@@ -1,8 +1,11 @@
 #pragma once
 
 #include <mrpt/maps/CSimplePointsMap.h>
+#include <mrpt/math/TPoint2D.h>
 #include <mrpt/nav/reactive/CRobot2NavInterface.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
+
+#include <vector>
 
 #include "mapping/rawlog_mapping.h"
 #include "simulator/simulation.h"
@@ -29,9 +32,11 @@ class CSimulatedRobotInterface : public mrpt::nav::CRobot2NavInterface {
   void setLocalizedPose(const mrpt::poses::CPose2D& pose, const mrpt::poses::CPose2D& odometry);
 
   // The newest stereo scan as a virtual laser scan (robot frame, column_projection/
-  // virtual_range_scan.h), taken with the robot at pose() == `pose`: what senseObstacles reports
-  // until the next one, as the driver of a robot carrying the stereo head would.
-  void setSensedObstacles(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::poses::CPose2D& pose);
+  // virtual_range_scan.h) and its blind columns' points (column_projection/blind_column_points.h),
+  // taken with the robot at pose() == `pose`: what senseObstacles reports until the next one, as
+  // the driver of a robot carrying the stereo head would.
+  void setSensedObstacles(const mrpt::obs::CObservation2DRangeScan& scan,
+                          const std::vector<mrpt::math::TPoint2D>& blind_points, const mrpt::poses::CPose2D& pose);
 
   bool getCurrentPoseAndSpeeds(mrpt::math::TPose2D& pose, mrpt::math::TTwist2D& velocity_global,
                                mrpt::system::TTimeStamp& timestamp, mrpt::math::TPose2D& odometry,

@@ -23,6 +23,9 @@ mrpt::math::TPoint2D composed(const mrpt::poses::CPose2D& pose, const mrpt::math
   return global;
 }
 
+// Where what the body touches, or may touch unseen, is remembered: this far beyond its edge.
+constexpr double kContactBeyondBody = 0.05;
+
 }  // namespace
 
 SafetyGuard::SafetyGuard(const ExplorerOptions& options)
@@ -85,6 +88,16 @@ VelocityCommand SafetyGuard::guard(VelocityCommand command, const mrpt::poses::C
   if (allowed_to_contact < options_.held_speed_mps) {
     std::vector<mrpt::math::TPoint2D> holding;
     for (const mrpt::math::TPoint2D& point : local) {
+      // Nothing solid can be under the body: such a point (blind_column_points.h) says that the
+      // robot cannot see the ground ahead there. Whatever it cannot see may touch the body, so it
+      // is remembered just beyond the body's edge, as a contact is (rememberContact), until a
+      // later view sees past it.
+      const double range = std::hypot(point.x, point.y);
+      if (range < radius) {
+        const double scale = (radius + kContactBeyondBody) / std::max(range, 1e-9);
+        holding.push_back(composed(pose, {point.x * scale, point.y * scale}));
+        continue;
+      }
       const double travel =
           stereonav::freeTravel({point}, radius, margin, command.speed, command.turn_rate, horizon).to_contact_m;
       if (travel <= free.to_contact_m + options_.holding_depth_m) holding.push_back(composed(pose, point));
@@ -109,7 +122,7 @@ bool SafetyGuard::blocked(double commanded_speed, double speed, double time_s) {
 
 void SafetyGuard::rememberContact(const mrpt::poses::CPose2D& pose) {
   // Just beyond the body's edge, across its front arc.
-  const double reach = options_.robot_radius_m + 0.05;
+  const double reach = options_.robot_radius_m + kContactBeyondBody;
   for (const double bearing : {-0.6, -0.3, 0.0, 0.3, 0.6}) {
     contacts_.emplace_back(pose.x() + reach * std::cos(pose.phi() + bearing),
                            pose.y() + reach * std::sin(pose.phi() + bearing));

@@ -1,5 +1,7 @@
 // A wall in flat paint has nothing for stereo to match (issue 18): the map and the guard know it
-// only from the textured floor's end at its foot (ProjectionOptions::floor_end_max_depth_m).
+// only from the textured floor's end at its foot (ProjectionOptions::floor_end_max_depth_m), or,
+// nearer than the floor the camera can see, from the floor missing from the image's bottom rows
+// (ProjectionOptions::near_floor_m).
 #include <mrpt/config/CConfigFileMemory.h>
 
 #include <gtest/gtest.h>
@@ -11,6 +13,10 @@
 #include <string>
 
 #include "closed_loop/exploration_run.h"
+#include "closed_loop/simulated_robot_interface.h"
+#include "column_projection/blind_column_points.h"
+#include "column_projection/virtual_range_scan.h"
+#include "explorer/safety_guard.h"
 #include "mapping/map_outputs.h"
 #include "mapping/stereo_mapper.h"
 #include "simulator/simulation.h"
@@ -37,6 +43,13 @@ texture = flat
 )";
 constexpr double kEndWallFace = 4.95;
 
+// The corridor with the robot starting at (start_x, 0.8), looking at the painted wall.
+World corridorFrom(double start_x) {
+  std::string corridor = kCorridor;
+  corridor.replace(corridor.find("start_pose = 0.8"), 16, "start_pose = " + std::to_string(start_x));
+  return loadWorld(mrpt::config::CConfigFileMemory(corridor), "corridor.ini");
+}
+
 // Occupied cells in the strip just before and in the end wall (x 4.75 .. 5.05), across the
 // corridor away from the side walls (y 0.45 .. 1.15: eight rows of 0.1 m cells).
 int occupiedAtTheEndWall(const DisparityTaggedGrid& grid, const OccupancyScale& scale) {
@@ -54,9 +67,7 @@ int occupiedAtTheEndWall(const DisparityTaggedGrid& grid, const OccupancyScale& 
 
 // The robot stands at x = 3.2, 1.75 m from the painted wall, looking at it, for 2 s (ten frames).
 int rowsMarkedFromAStandstill(const ExplorationConfig& config) {
-  std::string corridor = kCorridor;
-  corridor.replace(corridor.find("start_pose = 0.8"), 16, "start_pose = 3.2");
-  const World world = loadWorld(mrpt::config::CConfigFileMemory(corridor), "corridor.ini");
+  const World world = corridorFrom(3.2);
   const SimulatorConfig& simulator = config.simulator;
   Simulation simulation(world, simulator.rig, simulator.sensor, simulator.robot, simulator.simulation);
   StereoMapper mapper(config.mapping, simulator.rig);
@@ -107,6 +118,45 @@ TEST(UnmatchedWallTest, TheExplorerStopsShortOfAFlatPaintedWall) {
   expectStopsShortOfThePaintedWall(config, "corridor");
   config.mapping.projection.floor_end_max_depth_m = 2.0;
   expectStopsShortOfThePaintedWall(config, "corridor_floor_end");
+}
+
+// The explorer's guard, fed what the head senses (the virtual scan and the blind columns' points,
+// as exploration_run.cc feeds it), holds a robot told to drive at 0.5 m/s straight at the painted
+// wall from `start_x` for 4 s. Returns the collisions.
+int collisionsDrivingAtThePaint(const ExplorationConfig& config, double start_x) {
+  const World world = corridorFrom(start_x);
+  const SimulatorConfig& simulator = config.simulator;
+  Simulation simulation(world, simulator.rig, simulator.sensor, simulator.robot, simulator.simulation);
+  CSimulatedRobotInterface robot(simulation, MapPoseSource::kGroundTruth);
+  StereoMapper mapper(config.mapping, simulator.rig);
+  SafetyGuard guard(config.explorer);
+  while (!simulation.timeUp(4.0)) {
+    if (simulation.frameDue()) {
+      const SimulatedFrame frame = simulation.renderFrame();
+      const RigFrame rig_frame = rigFrameOf(frame, simulator.rig);
+      mapper.process(rig_frame, frame.odometry);
+      const DisparityScan& scan = mapper.disparityScan().scan;
+      mrpt::obs::CObservation2DRangeScan sensed = makeVirtualRangeScan(scan, simulator.rig, 5.0);
+      sensed.timestamp = rig_frame.timestamp;
+      robot.setSensedObstacles(sensed, blindColumnPoints(scan, simulator.rig, config.explorer.robot_radius_m),
+                               robot.pose());
+    }
+    guard.readScan(robot, robot.pose(), simulation.time(), nullptr);
+    const VelocityCommand command = guard.guard({0.5, 0.0}, robot.pose());
+    simulation.step(command.speed, command.turn_rate);
+  }
+  return static_cast<int>(simulation.collisionEvents().size());
+}
+
+// From 0.6 m, nearer than the floor the camera can see (from 0.82 m ahead of the robot's centre),
+// the camera sees only paint: nothing is matched, and only the missing floor stops the robot.
+TEST(UnmatchedWallTest, TheGuardHoldsTheRobotBeforeAPaintedWallNearerThanTheFloorItSees) {
+  constexpr double kStartX = kEndWallFace - 0.6;
+  ExplorationConfig config = loadExplorationConfig(testing::shippedExplorationConfigPath());
+  config.mapping.projection.near_floor_m = 0.3;
+  EXPECT_EQ(collisionsDrivingAtThePaint(config, kStartX), 0);
+  config.mapping.projection.near_floor_m = 0.0;
+  EXPECT_GT(collisionsDrivingAtThePaint(config, kStartX), 0);
 }
 
 }  // namespace

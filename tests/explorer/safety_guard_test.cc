@@ -45,6 +45,22 @@ TEST(SafetyGuardTest, StopsForAnObstacleWithinTheStopGapAndRemembersIt) {
   EXPECT_NEAR(guard.nearObstacles().points()[0].x, 0.65, 0.05);
 }
 
+TEST(SafetyGuardTest, APointUnderTheFrontOfTheBodyStopsItAndIsRememberedAtTheBodysEdge) {
+  // What a blind column reports (column_projection/blind_column_points.h): 0.28 m ahead and a
+  // little to the left, inside the 0.3 m body.
+  SafetyGuard guard = guardAfterScan({{0.28, 0.05}});
+  EXPECT_EQ(guard.guard({1.0, 0.0}, mrpt::poses::CPose2D()).speed, 0.0);
+  // Nothing solid stands under the body: what the robot cannot see is remembered for the planner
+  // on the point's bearing, 0.05 m beyond the body's edge (as a contact).
+  ASSERT_EQ(guard.nearObstacles().points().size(), 1u);
+  const mrpt::math::TPoint2D remembered = guard.nearObstacles().points()[0];
+  EXPECT_NEAR(std::atan2(remembered.y, remembered.x), std::atan2(0.05, 0.28), 0.1);
+  EXPECT_NEAR(std::hypot(remembered.x, remembered.y), 0.35, 0.04);  // kept one per 5 cm cell
+  // The robot may back away or turn on the spot.
+  EXPECT_EQ(guard.guard({-0.3, 0.0}, mrpt::poses::CPose2D()).speed, -0.3);
+  EXPECT_EQ(guard.guard({0.0, 1.0}, mrpt::poses::CPose2D()).turn_rate, 1.0);
+}
+
 TEST(SafetyGuardTest, SlowsButDoesNotHoldTheRobotInADoorNarrowerThanBodyAndMargins) {
   KinematicRobot robot({0.0, 0.0, 0.0});
   robot.time_ = 1.0;  // its scans are stamped 1 s into the run
