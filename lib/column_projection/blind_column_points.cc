@@ -14,16 +14,12 @@ std::vector<mrpt::math::TPoint2D> blindColumnPoints(const DisparityScan& scan, c
   constexpr double kInsideBody = 0.02;
   const double radius = std::max(0.0, body_radius_m - kInsideBody);
   const auto sensor = rig.pose_on_robot.translation();
-  const auto rotation = rig.pose_on_robot.getRotationMatrix();
-  const PinholeCamera& camera = rig.reference;
   int ahead = 0;
   for (int column = 0; column < scan.columns(); ++column) {
     // The ray through the column's bottom pixel, the one that meets the nearest floor.
-    const double u = (column - camera.cx) / camera.focal_px;
-    const double v = (camera.height - 1 - camera.cy) / camera.focal_px;
-    double dx = rotation(0, 0) * u + rotation(0, 1) * v + rotation(0, 2);
-    double dy = rotation(1, 0) * u + rotation(1, 1) * v + rotation(1, 2);
-    const double dz = rotation(2, 0) * u + rotation(2, 1) * v + rotation(2, 2);
+    const mrpt::math::TVector3D ray = rig.rayOnRobot(column, rig.reference.height - 1);
+    double dx = ray.x, dy = ray.y;
+    const double dz = ray.z;
     if (dz >= 0.0 || sensor.z <= 0.0) continue;  // it meets no floor
     const double to_floor = -sensor.z / dz;
     if (std::abs(sensor.y + to_floor * dy) > body_radius_m) continue;

@@ -11,21 +11,18 @@ namespace {
 // Directions in the sensor's floor frame (x along the camera's heading, y to its left).
 class FloorBearings {
  public:
-  explicit FloorBearings(const CameraRig& rig)
-      : camera_(rig.reference), rotation_(rig.pose_on_robot.getRotationMatrix()) {
-    heading_ = std::atan2(rotation_(1, 2), rotation_(0, 2));  // of the optical axis
+  explicit FloorBearings(const CameraRig& rig) : rig_(rig) {
+    const auto rotation = rig.pose_on_robot.getRotationMatrix();
+    heading_ = std::atan2(rotation(1, 2), rotation(0, 2));  // of the optical axis
   }
 
   double heading() const { return heading_; }
 
   // Horizontal part of the camera ray through image point (x, y), per unit of camera depth Z.
   void horizontalRay(double x, double y, double& forward, double& left) const {
-    const double u = (x - camera_.cx) / camera_.focal_px;
-    const double v = (y - camera_.cy) / camera_.focal_px;
-    const double robot_x = rotation_(0, 0) * u + rotation_(0, 1) * v + rotation_(0, 2);
-    const double robot_y = rotation_(1, 0) * u + rotation_(1, 1) * v + rotation_(1, 2);
-    forward = std::cos(heading_) * robot_x + std::sin(heading_) * robot_y;
-    left = -std::sin(heading_) * robot_x + std::cos(heading_) * robot_y;
+    const mrpt::math::TVector3D ray = rig_.rayOnRobot(x, y);
+    forward = std::cos(heading_) * ray.x + std::sin(heading_) * ray.y;
+    left = -std::sin(heading_) * ray.x + std::cos(heading_) * ray.y;
   }
 
   double bearing(double x, double y) const {
@@ -35,8 +32,7 @@ class FloorBearings {
   }
 
  private:
-  PinholeCamera camera_;
-  mrpt::math::CMatrixDouble33 rotation_;
+  const CameraRig& rig_;
   double heading_;
 };
 

@@ -7,6 +7,15 @@
 
 namespace stereonav {
 
+mrpt::math::TVector3D CameraRig::rayOnRobot(double x, double y) const {
+  const double u = (x - reference.cx) / reference.focal_px;
+  const double v = (y - reference.cy) / reference.focal_px;
+  const auto rotation = pose_on_robot.getRotationMatrix();
+  return {rotation(0, 0) * u + rotation(0, 1) * v + rotation(0, 2),
+          rotation(1, 0) * u + rotation(1, 1) * v + rotation(1, 2),
+          rotation(2, 0) * u + rotation(2, 1) * v + rotation(2, 2)};
+}
+
 mrpt::poses::CPose3D CameraRig::opticalPoseOnRobot(double x, double y, double z, double yaw,
                                                    double tilt_down) {
   // Robot frame to a forward-looking optical frame: z_cam = x_robot, x_cam = -y_robot,

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <mrpt/math/TPoint3D.h>
 #include <mrpt/poses/CPose3D.h>
 
 #include <string>
@@ -50,6 +51,11 @@ struct CameraRig {
   double disparityForDepth(double depth_m) const {
     return reference.focal_px * baseline_m / depth_m;
   }
+
+  // The reference camera's ray through image point (x, y), in the robot frame's axes, per unit of
+  // depth along the optical axis: the robot-frame offset from the camera of the point seen
+  // there at depth Z is Z times this.
+  mrpt::math::TVector3D rayOnRobot(double x, double y) const;
 
   // The optical-frame pose of a camera mounted at (x, y, z) on the robot, turned left by `yaw`
   // and pitched down by `tilt_down` (radians), as a person measures it on the robot.

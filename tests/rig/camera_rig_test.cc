@@ -43,6 +43,29 @@ TEST(CameraRigTest, YawTurnsTheOpticalAxisLeft) {
   EXPECT_NEAR(ahead.y, 1.0, 1e-12);
 }
 
+TEST(CameraRigTest, ARayThroughAPixelIsItsOffsetPerUnitOfDepthOnTheRobot) {
+  CameraRig rig;  // level, looking along the robot's x
+  rig.reference.focal_px = 100.0;
+  rig.reference.cx = 50.0;
+  rig.reference.cy = 40.0;
+  const auto centre = rig.rayOnRobot(50.0, 40.0);
+  EXPECT_NEAR(centre.x, 1.0, 1e-12);
+  EXPECT_NEAR(centre.y, 0.0, 1e-12);
+  EXPECT_NEAR(centre.z, 0.0, 1e-12);
+  // A focal length right of and half of one below the principal point: 45 degrees to the right
+  // and half a unit down per unit of depth.
+  const auto right_below = rig.rayOnRobot(150.0, 90.0);
+  EXPECT_NEAR(right_below.x, 1.0, 1e-12);
+  EXPECT_NEAR(right_below.y, -1.0, 1e-12);
+  EXPECT_NEAR(right_below.z, -0.5, 1e-12);
+  // Tilted down 45 degrees, the principal point's ray drops as fast as it goes forward; both per
+  // unit of depth along the tilted axis, sqrt(1/2) each.
+  rig.pose_on_robot = CameraRig::opticalPoseOnRobot(0.0, 0.0, 1.0, 0.0, mrpt::DEG2RAD(45.0));
+  const auto tilted = rig.rayOnRobot(50.0, 40.0);
+  EXPECT_NEAR(tilted.x, std::sqrt(0.5), 1e-12);
+  EXPECT_NEAR(tilted.z, -std::sqrt(0.5), 1e-12);
+}
+
 TEST(CameraRigTest, LoadsFromIni) {
   mrpt::config::CConfigFileMemory config(
       "[rig]\nwidth = 160\nheight = 120\nfocal_px = 80\nbaseline_m = 0.1\n"
