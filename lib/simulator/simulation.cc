@@ -117,15 +117,21 @@ void Simulation::step(double speed, double turn_rate) {
 }
 
 void Simulation::recordCollision(double time_s, double speed_before) {
-  // A moving obstacle this close to the body is what the robot touched.
+  // What lies this close to the body is what the robot touched; a moving obstacle is named
+  // before the static solids, which it may have pushed the robot against.
   constexpr double kContactSlackM = 0.01;
-  CollisionEvent event{time_s, robot_.pose().x(), robot_.pose().y(), speed_before, "static"};
-  for (size_t i = 0; i < traffic_.solids().size(); ++i) {
-    if (solidOverlapsDisc(traffic_.solids()[i], robot_.pose().x(), robot_.pose().y(),
-                          robot_options_.radius_m + kContactSlackM)) {
-      event.with = world_.moving_obstacles[i].name;
+  const double x = robot_.pose().x(), y = robot_.pose().y(), reach = robot_options_.radius_m + kContactSlackM;
+  CollisionEvent event{time_s, x, y, speed_before, ""};
+  for (size_t i = 0; i < traffic_.solids().size() && event.with.empty(); ++i) {
+    if (solidOverlapsDisc(traffic_.solids()[i], x, y, reach)) event.with = world_.moving_obstacles[i].name;
+  }
+  for (size_t i = 0; i < world_.solids.size() && event.with.empty(); ++i) {
+    const Solid& solid = world_.solids[i];
+    if (solidInHeightBand(solid, 0.0, robot_options_.height_m) && solidOverlapsDisc(solid, x, y, reach)) {
+      event.with = world_.solid_sections[i] + " (" + world_.texture_names[static_cast<size_t>(solid.texture)] + ")";
     }
   }
+  if (event.with.empty()) event.with = "static";
   collision_events_.push_back(event);
 }
 

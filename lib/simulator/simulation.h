@@ -55,7 +55,9 @@ struct CollisionEvent {
   double x = 0.0;
   double y = 0.0;
   double speed_mps = 0.0;  // the robot's speed just before
-  std::string with;        // a moving obstacle's section name, or "static"
+  // What was touched: a moving obstacle's section ("moving.person"), or a static solid's with
+  // its texture ("wall.w15 (paint_1)"); "static" if nothing lies within a centimetre of the body.
+  std::string with;
 };
 
 struct SimulationSummary {

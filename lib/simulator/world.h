@@ -60,7 +60,11 @@ struct MovingObstacle {
 // light level that may change over time. Built by loadWorld() (world_loader.h).
 struct World {
   std::vector<SurfaceTexture> textures;
+  std::vector<std::string> texture_names;  // per texture, its [texture.<name>]
   std::vector<Solid> solids;  // static
+  // Per static solid, the world file section it came from ("wall.w15"; a table's top and legs
+  // share theirs): what a collision report names.
+  std::vector<std::string> solid_sections;
   std::vector<MovingObstacle> moving_obstacles;
   int floor_texture = 0;
   double ceiling_height = 0.0;  // 0: no ceiling, rays going up see nothing (infinitely far)

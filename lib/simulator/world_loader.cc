@@ -133,6 +133,7 @@ class WorldBuilder {
     }
     texture_index_[name] = static_cast<int>(world_.textures.size());
     world_.textures.push_back(texture);
+    world_.texture_names.push_back(name);
   }
 
   int textureOf(IniSection& section, const std::string& key) {
@@ -189,8 +190,9 @@ class WorldBuilder {
     return list;
   }
 
-  void addSolid(const Solid& solid, bool identical_texture = false) {
+  void addSolid(const IniSection& section, const Solid& solid, bool identical_texture = false) {
     world_.solids.push_back(solid);
+    world_.solid_sections.push_back(section.name());
     identical_texture_.push_back(identical_texture);
   }
 
@@ -239,7 +241,7 @@ class WorldBuilder {
       const double length = std::hypot(b.x - a.x, b.y - a.y);
       if (length <= 0.0) fail(section, "points", "two consecutive points coincide");
       // Each slab runs half a thickness past its end points, so corners close.
-      addSolid(Solid::box((a.x + b.x) / 2, (a.y + b.y) / 2, length + thickness, thickness,
+      addSolid(section, Solid::box((a.x + b.x) / 2, (a.y + b.y) / 2, length + thickness, thickness,
                           std::atan2(b.y - a.y, b.x - a.x), 0.0, height, texture));
     }
   }
@@ -252,7 +254,7 @@ class WorldBuilder {
     const double yaw = degrees(section, "yaw_deg");
     const double z = nonNegative(section, "z", 0.0);
     const double height = positive(section, "height", 1.0);
-    addSolid(Solid::box(center[0], center[1], size[0], size[1], yaw, z, z + height,
+    addSolid(section, Solid::box(center[0], center[1], size[0], size[1], yaw, z, z + height,
                         textureOf(section, "texture")));
   }
 
@@ -276,7 +278,7 @@ class WorldBuilder {
     std::uniform_real_distribution<double> draw(0.0, 1.0);
     for (const CellRectangle& cells : occupiedRectangles(plan)) {
       const double r = plan.resolution();
-      addSolid(Solid::box(plan.xMin() + r * (cells.col_begin + cells.col_end) / 2.0,
+      addSolid(section, Solid::box(plan.xMin() + r * (cells.col_begin + cells.col_end) / 2.0,
                           plan.yMin() + r * (cells.row_begin + cells.row_end) / 2.0,
                           r * (cells.col_end - cells.col_begin), r * (cells.row_end - cells.row_begin), 0.0,
                           0.0, height, draw(random) < flat_share ? flat_texture : texture));
@@ -304,7 +306,7 @@ class WorldBuilder {
     const double radius = positive(section, "radius", 0.1);
     const double z = nonNegative(section, "z", 0.0);
     const double height = positive(section, "height", 1.0);
-    addSolid(Solid::cylinder(center[0], center[1], radius, z, z + height, textureOf(section, "texture")));
+    addSolid(section, Solid::cylinder(center[0], center[1], radius, z, z + height, textureOf(section, "texture")));
   }
 
   void addTable(IniSection& section) {
@@ -325,14 +327,14 @@ class WorldBuilder {
       fail(section, "leg_inset", "legs would stand outside the top");
     }
     const double bottom = height - top_thickness;
-    addSolid(Solid::box(center[0], center[1], size[0], size[1], yaw, bottom, height, texture));
+    addSolid(section, Solid::box(center[0], center[1], size[0], size[1], yaw, bottom, height, texture));
     const double leg_x = size[0] / 2 - leg_inset - leg_radius;
     const double leg_y = size[1] / 2 - leg_inset - leg_radius;
     for (int sx : {-1, 1}) {
       for (int sy : {-1, 1}) {
         const double lx = sx * leg_x;
         const double ly = sy * leg_y;
-        addSolid(Solid::cylinder(center[0] + std::cos(yaw) * lx - std::sin(yaw) * ly,
+        addSolid(section, Solid::cylinder(center[0] + std::cos(yaw) * lx - std::sin(yaw) * ly,
                                  center[1] + std::sin(yaw) * lx + std::cos(yaw) * ly, leg_radius,
                                  0.0, bottom, leg_texture));
       }
@@ -364,7 +366,7 @@ class WorldBuilder {
     const int pickets = static_cast<int>(picket_count);
     for (int i = 0; i < pickets; ++i) {
       const double s = width / 2 + i * (width + gap);
-      addSolid(Solid::box(from[0] + ux * s, from[1] + uy * s, width, thickness, yaw, 0.0, height, texture),
+      addSolid(section, Solid::box(from[0] + ux * s, from[1] + uy * s, width, thickness, yaw, 0.0, height, texture),
                true);
     }
     for (double rail : rails) {
@@ -373,7 +375,7 @@ class WorldBuilder {
       }
       // Rails sit behind the pickets (on the side of the fence's left normal).
       const double behind = thickness;
-      addSolid(Solid::box((from[0] + to[0]) / 2 - uy * behind, (from[1] + to[1]) / 2 + ux * behind, length,
+      addSolid(section, Solid::box((from[0] + to[0]) / 2 - uy * behind, (from[1] + to[1]) / 2 + ux * behind, length,
                           thickness, yaw, rail - rail_size / 2, rail + rail_size / 2, texture));
     }
   }
