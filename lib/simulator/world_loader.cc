@@ -242,7 +242,7 @@ class WorldBuilder {
       if (length <= 0.0) fail(section, "points", "two consecutive points coincide");
       // Each slab runs half a thickness past its end points, so corners close.
       addSolid(section, Solid::box((a.x + b.x) / 2, (a.y + b.y) / 2, length + thickness, thickness,
-                          std::atan2(b.y - a.y, b.x - a.x), 0.0, height, texture));
+                                   std::atan2(b.y - a.y, b.x - a.x), 0.0, height, texture));
     }
   }
 
@@ -254,8 +254,8 @@ class WorldBuilder {
     const double yaw = degrees(section, "yaw_deg");
     const double z = nonNegative(section, "z", 0.0);
     const double height = positive(section, "height", 1.0);
-    addSolid(section, Solid::box(center[0], center[1], size[0], size[1], yaw, z, z + height,
-                        textureOf(section, "texture")));
+    addSolid(section,
+             Solid::box(center[0], center[1], size[0], size[1], yaw, z, z + height, textureOf(section, "texture")));
   }
 
   // A ROS map_server floor plan: its occupied cells become walls `height` tall, as boxes over
@@ -279,9 +279,9 @@ class WorldBuilder {
     for (const CellRectangle& cells : occupiedRectangles(plan)) {
       const double r = plan.resolution();
       addSolid(section, Solid::box(plan.xMin() + r * (cells.col_begin + cells.col_end) / 2.0,
-                          plan.yMin() + r * (cells.row_begin + cells.row_end) / 2.0,
-                          r * (cells.col_end - cells.col_begin), r * (cells.row_end - cells.row_begin), 0.0,
-                          0.0, height, draw(random) < flat_share ? flat_texture : texture));
+                                   plan.yMin() + r * (cells.row_begin + cells.row_end) / 2.0,
+                                   r * (cells.col_end - cells.col_begin), r * (cells.row_end - cells.row_begin), 0.0,
+                                   0.0, height, draw(random) < flat_share ? flat_texture : texture));
     }
   }
 
@@ -335,8 +335,8 @@ class WorldBuilder {
         const double lx = sx * leg_x;
         const double ly = sy * leg_y;
         addSolid(section, Solid::cylinder(center[0] + std::cos(yaw) * lx - std::sin(yaw) * ly,
-                                 center[1] + std::sin(yaw) * lx + std::cos(yaw) * ly, leg_radius,
-                                 0.0, bottom, leg_texture));
+                                          center[1] + std::sin(yaw) * lx + std::cos(yaw) * ly, leg_radius, 0.0, bottom,
+                                          leg_texture));
       }
     }
   }
@@ -376,7 +376,7 @@ class WorldBuilder {
       // Rails sit behind the pickets (on the side of the fence's left normal).
       const double behind = thickness;
       addSolid(section, Solid::box((from[0] + to[0]) / 2 - uy * behind, (from[1] + to[1]) / 2 + ux * behind, length,
-                          thickness, yaw, rail - rail_size / 2, rail + rail_size / 2, texture));
+                                   thickness, yaw, rail - rail_size / 2, rail + rail_size / 2, texture));
     }
   }
 
