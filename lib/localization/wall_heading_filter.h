@@ -1,0 +1,99 @@
+#pragma once
+
+#include <cmath>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "localization/wall_segments.h"
+
+namespace stereonav {
+
+// How WallHeadingFilter keeps the heading by the walls' directions (keys of [localization]).
+struct WallHeadingOptions {
+  WallSegmentOptions segments;
+  // A segment's direction is never trusted to better than this: the fit's own sigma assumes
+  // independent readings, and a stereo scan's are not.
+  double min_sigma_deg = 0.5;
+  // The heading noise odometry adds, as one sigma: per frame, per radian turned, per metre driven.
+  double heading_noise_deg_per_frame = 0.05;
+  double heading_noise_per_rad = 0.03;
+  double heading_noise_deg_per_m = 0.3;
+  // How far odometry's turns may be off in scale (a wheel base off its nominal length): one
+  // sigma of the prior on the scale that the filter learns.
+  double turn_scale_sigma = 0.05;
+  // A segment corrects the heading only within this many sigmas of a known wall direction...
+  double gate_sigmas = 3.0;
+  // ... and never when farther than this from every known direction.
+  double max_correction_deg = 10.0;
+  // A new pair of wall directions is taken up once this many segments, farther than
+  // max_correction_deg from every known direction, agree on it within new_direction_spread_deg.
+  int new_direction_segments = 8;
+  double new_direction_spread_deg = 2.0;
+};
+
+// Keeps the robot's heading from drifting by the directions of the building's walls: walls run
+// along few directions, most buildings at right angles, and once a direction is known every
+// straight stretch of wall seen along it tells the heading again, with an error that does not grow
+// with time as odometry's does.
+//
+// A Kalman filter whose state is the heading, odometry's turn scale (a wheel base off its nominal
+// length turns every turn by the same factor) and the direction of each pair of perpendicular
+// wall directions (SLAM with wall directions as landmarks): odometry's turn times the scale
+// predicts the heading; each wall segment near a known direction corrects the heading, the scale
+// and that direction together.
+//
+// A direction counts once several segments agree on it (one segment may be a chair set askew),
+// and is then estimated from its first sighting on: the filter runs again over the frames so
+// far, so the first direction is as sure as the heading was when it was first seen, and the
+// map's frame stays that of the start.
+class WallHeadingFilter {
+ public:
+  WallHeadingFilter(const WallHeadingOptions& options, double start_heading);
+
+  // The heading after a frame: the robot turned `turn_rad` (as odometry, or a scan match, measured
+  // it) and drove `driven_m` since the last one, and saw `segments` (robot frame).
+  double update(double turn_rad, double driven_m, std::vector<WallSegment> segments);
+
+  double heading() const { return state_.heading; }
+  double headingSigmaRad() const { return std::sqrt(state_.covariance(0, 0)); }
+  double turnScale() const { return state_.turn_scale; }
+  // Each known pair of wall directions by its member in [-pi/4, pi/4) (the other is 90 degrees on).
+  const std::vector<double>& directions() const { return state_.directions; }
+  // How many of the last frame's segments corrected the heading.
+  int lastFrameCorrections() const { return state_.frame_corrections; }
+
+ private:
+  struct State {
+    double heading = 0.0;
+    double turn_scale = 1.0;
+    std::vector<double> directions;
+    Eigen::MatrixXd covariance;  // of (heading, turn scale, directions...)
+    int frame_corrections = 0;
+  };
+  struct Frame {
+    double turn_rad = 0.0;
+    double driven_m = 0.0;
+    std::vector<WallSegment> segments;
+  };
+  struct Candidate {
+    double direction = 0.0;
+    double weight = 0.0;
+    int segments = 0;
+  };
+
+  // Runs `frame` through `state`; segments far from every direction of `state` vote for new
+  // directions when `vote` is set. Returns true when a vote confirms one.
+  bool step(State& state, const Frame& frame, bool vote);
+  bool voteFor(double world_direction, double sigma);
+  State startState() const;
+
+  WallHeadingOptions options_;
+  double start_heading_;
+  State state_;
+  std::vector<Frame> frames_;  // every frame so far, to run again (a few segments each)
+  std::vector<double> confirmed_;  // directions (mod 90 degrees) to take up at their first sighting
+  std::vector<Candidate> candidates_;
+};
+
+}  // namespace stereonav

@@ -1,0 +1,104 @@
+#include "localization/wall_heading_filter.h"
+
+#include <gtest/gtest.h>
+
+#include <mrpt/core/bits_math.h>
+#include <mrpt/math/wrap2pi.h>
+
+#include "hand_drawn_map.h"
+
+namespace stereonav {
+namespace {
+
+// A 4 m square room centred on the origin, turned by `angle_deg`.
+std::vector<testing::Segment> room(double angle_deg) {
+  const double c = std::cos(mrpt::DEG2RAD(angle_deg)), s = std::sin(mrpt::DEG2RAD(angle_deg));
+  const double corners[4][2] = {{-2, -2}, {2, -2}, {2, 2}, {-2, 2}};
+  std::vector<testing::Segment> walls;
+  for (int i = 0; i < 4; ++i) {
+    const double* a = corners[i];
+    const double* b = corners[(i + 1) % 4];
+    walls.push_back({c * a[0] - s * a[1], s * a[0] + c * a[1], c * b[0] - s * b[1], s * b[0] + c * b[1]});
+  }
+  return walls;
+}
+
+// Spins a robot in `walls` by `true_turn` per frame while odometry reads each turn `scale` times
+// too large; returns the largest heading error of the filter over the last half of the frames.
+double worstHeadingError(WallHeadingFilter& filter, const std::vector<testing::Segment>& walls,
+                         double start_heading, double true_turn, double scale, int frames) {
+  double truth = start_heading;
+  double worst = 0.0;
+  for (int frame = 0; frame < frames; ++frame) {
+    const double turn = frame == 0 ? 0.0 : true_turn;
+    truth += turn;
+    const mrpt::poses::CPose2D robot(0.3, -0.2, truth);
+    const double heading =
+        filter.update(scale * turn, 0.0, wallSegments(testing::scanOf(walls, robot), WallSegmentOptions{}));
+    if (frame >= frames / 2) worst = std::max(worst, std::abs(mrpt::math::wrapToPi(heading - truth)));
+  }
+  return worst;
+}
+
+TEST(WallHeadingFilterTest, KeepsTheHeadingWhileOdometryOverTurnsAndLearnsTheTurnScale) {
+  // 300 frames of 0.2 rad, read 2% large: odometry alone ends 300 * 0.2 * 0.02 = 1.2 rad (69
+  // degrees) off. The walls keep the heading, and the scale the filter learns is 1 / 1.02.
+  WallHeadingFilter filter(WallHeadingOptions{}, 0.0);
+  const double worst = worstHeadingError(filter, room(0.0), 0.0, 0.2, 1.02, 300);
+  EXPECT_LT(worst, mrpt::DEG2RAD(0.2));
+  EXPECT_NEAR(filter.turnScale(), 1.0 / 1.02, 0.002);
+  ASSERT_EQ(filter.directions().size(), 1u);
+  EXPECT_NEAR(filter.directions()[0], 0.0, mrpt::DEG2RAD(0.2));
+}
+
+TEST(WallHeadingFilterTest, WallsAtAnyAngleServeAndTheMapFrameStaysTheStarts) {
+  // A room turned by 30 degrees, the robot starting at heading 10 degrees (the map's frame is the
+  // start's): the known directions are the room's, 30 and 120 degrees, kept as 30.
+  WallHeadingFilter filter(WallHeadingOptions{}, mrpt::DEG2RAD(10.0));
+  const double worst = worstHeadingError(filter, room(30.0), mrpt::DEG2RAD(10.0), -0.15, 0.97, 300);
+  EXPECT_LT(worst, mrpt::DEG2RAD(0.2));
+  ASSERT_EQ(filter.directions().size(), 1u);
+  EXPECT_NEAR(filter.directions()[0], mrpt::DEG2RAD(30.0), mrpt::DEG2RAD(0.2));
+}
+
+WallSegment segmentAlong(double direction_deg) {
+  WallSegment segment;
+  segment.direction_rad = mrpt::DEG2RAD(direction_deg);
+  segment.sigma_rad = mrpt::DEG2RAD(0.5);
+  segment.length_m = 1.0;
+  segment.points = 20;
+  return segment;
+}
+
+TEST(WallHeadingFilterTest, ADirectionCountsOnlyOnceEnoughSegmentsAgreeOnIt) {
+  WallHeadingOptions options;
+  options.new_direction_segments = 4;
+  WallHeadingFilter filter(options, 0.0);
+  // Three segments along 25 degrees (a chair set askew): not yet a direction, no correction.
+  for (int frame = 0; frame < 3; ++frame) {
+    EXPECT_DOUBLE_EQ(filter.update(0.0, 0.0, {segmentAlong(25.0)}), 0.0);
+    EXPECT_TRUE(filter.directions().empty());
+  }
+  // The fourth agrees: the direction is taken up from the first sighting on.
+  filter.update(0.0, 0.0, {segmentAlong(25.0)});
+  ASSERT_EQ(filter.directions().size(), 1u);
+  EXPECT_NEAR(filter.directions()[0], mrpt::DEG2RAD(25.0), 1e-9);
+  // A wall perpendicular to it, seen 1 degree off after a turn, now corrects the heading:
+  // odometry says 90 degrees, the wall says 91 (or the turn was 1 degree short).
+  const double heading = filter.update(mrpt::DEG2RAD(90.0), 0.0, {segmentAlong(26.0)});
+  EXPECT_LT(heading, mrpt::DEG2RAD(90.0));
+  EXPECT_GT(heading, mrpt::DEG2RAD(89.0));
+}
+
+TEST(WallHeadingFilterTest, WithoutWallsTheHeadingIsOdometrys) {
+  WallHeadingFilter filter(WallHeadingOptions{}, 0.5);
+  double expected = 0.5;
+  for (const double turn : {0.1, -0.3, 0.25, 0.0, 1.0}) {
+    expected += turn;
+    EXPECT_DOUBLE_EQ(filter.update(turn, 0.2, {}), expected);
+  }
+  EXPECT_DOUBLE_EQ(filter.turnScale(), 1.0);
+}
+
+}  // namespace
+}  // namespace stereonav
