@@ -29,6 +29,29 @@ LocalizationOptions loadLocalizationOptions(IniSection& section) {
     throw ConfigError("[" + section.name() + "] min_matched_fraction: must be in [0, 1]");
   }
   options.max_spread = section.getPositive("max_spread", options.max_spread);
+  WallHeadingOptions& walls = options.walls;
+  walls.segments.max_range_m = section.getNonNegative("wall_max_range_m", walls.segments.max_range_m);
+  walls.segments.max_gap_m = section.getPositive("wall_max_gap_m", walls.segments.max_gap_m);
+  walls.segments.split_tolerance_m = section.getPositive("wall_split_tolerance_m", walls.segments.split_tolerance_m);
+  walls.segments.min_points = section.getInt("wall_min_points", walls.segments.min_points);
+  if (walls.segments.min_points < 3) throw ConfigError("[" + section.name() + "] wall_min_points: must be >= 3");
+  walls.segments.min_length_m = section.getPositive("wall_min_length_m", walls.segments.min_length_m);
+  walls.min_sigma_deg = section.getPositive("wall_min_sigma_deg", walls.min_sigma_deg);
+  walls.heading_noise_deg_per_frame =
+      section.getPositive("heading_noise_deg_per_frame", walls.heading_noise_deg_per_frame);
+  walls.heading_noise_per_rad = section.getNonNegative("heading_noise_per_rad", walls.heading_noise_per_rad);
+  walls.heading_noise_deg_per_m = section.getNonNegative("heading_noise_deg_per_m", walls.heading_noise_deg_per_m);
+  walls.turn_scale_sigma = section.getNonNegative("turn_scale_sigma", walls.turn_scale_sigma);
+  walls.gate_sigmas = section.getPositive("wall_gate_sigmas", walls.gate_sigmas);
+  walls.max_correction_deg = section.getPositive("wall_max_correction_deg", walls.max_correction_deg);
+  if (!(walls.max_correction_deg < 45.0)) {
+    throw ConfigError("[" + section.name() + "] wall_max_correction_deg: must be below 45 (walls pair at 90 degrees)");
+  }
+  walls.new_direction_segments = section.getInt("wall_new_direction_segments", walls.new_direction_segments);
+  if (walls.new_direction_segments < 1) {
+    throw ConfigError("[" + section.name() + "] wall_new_direction_segments: must be >= 1");
+  }
+  walls.new_direction_spread_deg = section.getPositive("wall_new_direction_spread_deg", walls.new_direction_spread_deg);
   return options;
 }
 

@@ -1,12 +1,13 @@
 #pragma once
 
 #include "common/ini_section.h"
+#include "localization/wall_heading_filter.h"
 
 namespace stereonav {
 
-// How ScanLocalizer corrects odometry by matching each stereo scan against the map built so far
-// (section [localization]). The paper maps with dead reckoning and names its drift as the open
-// problem (section 5); these are the knobs of the correlative matcher that closes it.
+// How ScanLocalizer corrects odometry by each stereo scan (section [localization]): the
+// correlative matcher against the map built so far, then the heading by the walls' directions.
+// The paper maps with dead reckoning and names its drift as the open problem (section 5).
 struct LocalizationOptions {
   // Only readings nearer than this take part: a stereo reading's range error grows with the
   // square of its range (Z^2 / (f B) per pixel of disparity, paper section 3.2), so far ones
@@ -22,7 +23,8 @@ struct LocalizationOptions {
   // The chance that a reading matches nothing in the map (new obstacles, mismatches): caps the
   // penalty a single reading can give a pose.
   double outlier_probability = 0.2;
-  // The poses tried around the odometry prediction: +/- window, in steps.
+  // The poses tried around the odometry prediction: +/- window, in steps. Both windows 0: no
+  // matching, the pose is odometry's with the walls' heading.
   double window_m = 0.3;
   double window_deg = 10.0;
   double step_m = 0.025;
@@ -42,6 +44,13 @@ struct LocalizationOptions {
   // scan's likelihood along it, as a fraction of the window, is below this. Along a straight
   // corridor the likelihood is flat and the position along it keeps odometry.
   double max_spread = 0.1;
+  // Keys wall_max_range_m, wall_max_gap_m, wall_split_tolerance_m, wall_min_points,
+  // wall_min_length_m, wall_min_sigma_deg, heading_noise_deg_per_frame, heading_noise_per_rad,
+  // heading_noise_deg_per_m, turn_scale_sigma, wall_gate_sigmas, wall_max_correction_deg,
+  // wall_new_direction_segments, wall_new_direction_spread_deg. wall_max_range_m = 0: no walls.
+  WallHeadingOptions walls;
+
+  bool matches() const { return window_m > 0.0 || window_deg > 0.0; }
 };
 
 // Keys as the member names; all optional, steps and windows positive.

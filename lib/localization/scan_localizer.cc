@@ -1,5 +1,7 @@
 #include "localization/scan_localizer.h"
 
+#include <mrpt/math/wrap2pi.h>
+
 #include <algorithm>
 
 namespace stereonav {
@@ -19,11 +21,23 @@ const ScanMatch& ScanLocalizer::update(const mrpt::poses::CPose2D& odometry,
                                        const DisparityTaggedGrid& map) {
   const mrpt::poses::CPose2D motion =
       last_odometry_ ? odometry - *last_odometry_ : mrpt::poses::CPose2D();
-  const mrpt::poses::CPose2D predicted = last_odometry_ ? last_match_.pose + motion : odometry;
+  const mrpt::poses::CPose2D previous = last_odometry_ ? last_match_.pose : odometry;
+  const mrpt::poses::CPose2D predicted = previous + motion;
   last_odometry_ = odometry;
-  const ObstacleDistanceField field(map, field_range_m_);
-  last_match_ = matchScan(matchablePoints(scan, focal_baseline_px_m_, options_), field, predicted,
-                          priorSigmaAfter(motion, options_), options_);
+  if (options_.matches()) {
+    const ObstacleDistanceField field(map, field_range_m_);
+    last_match_ = matchScan(matchablePoints(scan, focal_baseline_px_m_, options_), field, predicted,
+                            priorSigmaAfter(motion, options_), options_);
+  } else {
+    last_match_ = ScanMatch();
+    last_match_.pose = predicted;
+  }
+  if (!wall_heading_) wall_heading_.emplace(options_.walls, odometry.phi());
+  // The turn as matched where the match pinned the heading, as odometry measured it otherwise.
+  const double turn = mrpt::math::wrapToPi(last_match_.pose.phi() - previous.phi());
+  last_match_.pose.phi(mrpt::math::wrapToPi(
+      wall_heading_->update(turn, motion.norm(), wallSegments(scan, options_.walls.segments))));
+  if (wall_heading_->lastFrameCorrections() > 0) last_match_.corrected = true;
   return last_match_;
 }
 

@@ -7,14 +7,17 @@
 
 #include "localization/localization_options.h"
 #include "localization/scan_matcher.h"
+#include "localization/wall_heading_filter.h"
 #include "occupancy_grid/disparity_tagged_grid.h"
 
 namespace stereonav {
 
-// Tracks the robot's pose in the map's frame from odometry corrected by scan matching: each
-// frame, the odometry motion since the previous frame is added to the last corrected pose, and
-// the frame's stereo scan (its virtual CObservation2DRangeScan, column_projection/
-// virtual_range_scan.h) is matched against the map built from the frames before it (matchScan).
+// Tracks the robot's pose in the map's frame from odometry corrected by the frame's stereo scan
+// (its virtual CObservation2DRangeScan, column_projection/virtual_range_scan.h), in two steps:
+//  1. the odometry motion since the previous frame, added to the last corrected pose, is matched
+//     against the map built from the frames before it (matchScan; skipped when both windows are 0);
+//  2. the heading is then kept by the directions of the walls the scan sees (WallHeadingFilter),
+//     which does not drift as odometry and the match against a map built from drifting poses do.
 // The map's frame is the first frame's odometry frame.
 //
 //   ScanLocalizer localizer(options.localization, rig.reference.focal_px * rig.baseline_m);
@@ -33,6 +36,7 @@ class ScanLocalizer {
   // The last corrected pose (the origin before the first update).
   const mrpt::poses::CPose2D& pose() const { return last_match_.pose; }
   const ScanMatch& lastMatch() const { return last_match_; }
+  const WallHeadingFilter* wallHeading() const { return wall_heading_ ? &*wall_heading_ : nullptr; }
 
  private:
   LocalizationOptions options_;
@@ -40,6 +44,7 @@ class ScanLocalizer {
   double field_range_m_;  // distances beyond are all equally far for every reading
   std::optional<mrpt::poses::CPose2D> last_odometry_;
   ScanMatch last_match_;
+  std::optional<WallHeadingFilter> wall_heading_;  // from the first frame on
 };
 
 }  // namespace stereonav

@@ -16,7 +16,12 @@ TEST(LocalizationOptionsTest, LoadsEveryKey) {
       "max_range_m = 3\npoint_spacing_m = 0.1\ndisparity_sigma_px = 0.5\nmin_point_sigma_m = 0.04\n"
       "outlier_probability = 0.3\nwindow_m = 0.5\nwindow_deg = 12\nstep_m = 0.05\nstep_deg = 2\n"
       "prior_sigma_m = 0.2\nprior_sigma_m_per_m = 0.05\nprior_sigma_deg = 4\nprior_sigma_per_rad = 0.2\n"
-      "min_matched_points = 20\nmin_matched_fraction = 0.7\nmax_spread = 0.3\n",
+      "min_matched_points = 20\nmin_matched_fraction = 0.7\nmax_spread = 0.3\n"
+      "wall_max_range_m = 2\nwall_max_gap_m = 0.3\nwall_split_tolerance_m = 0.04\nwall_min_points = 15\n"
+      "wall_min_length_m = 0.8\nwall_min_sigma_deg = 0.4\nheading_noise_deg_per_frame = 0.1\n"
+      "heading_noise_per_rad = 0.02\nheading_noise_deg_per_m = 0.5\nturn_scale_sigma = 0.03\n"
+      "wall_gate_sigmas = 4\nwall_max_correction_deg = 8\nwall_new_direction_segments = 5\n"
+      "wall_new_direction_spread_deg = 1.5\n",
       loadLocalizationOptions);
   EXPECT_DOUBLE_EQ(options.max_range_m, 3.0);
   EXPECT_DOUBLE_EQ(options.point_spacing_m, 0.1);
@@ -34,10 +39,27 @@ TEST(LocalizationOptionsTest, LoadsEveryKey) {
   EXPECT_EQ(options.min_matched_points, 20);
   EXPECT_DOUBLE_EQ(options.min_matched_fraction, 0.7);
   EXPECT_DOUBLE_EQ(options.max_spread, 0.3);
+  const WallHeadingOptions& walls = options.walls;
+  EXPECT_DOUBLE_EQ(walls.segments.max_range_m, 2.0);
+  EXPECT_DOUBLE_EQ(walls.segments.max_gap_m, 0.3);
+  EXPECT_DOUBLE_EQ(walls.segments.split_tolerance_m, 0.04);
+  EXPECT_EQ(walls.segments.min_points, 15);
+  EXPECT_DOUBLE_EQ(walls.segments.min_length_m, 0.8);
+  EXPECT_DOUBLE_EQ(walls.min_sigma_deg, 0.4);
+  EXPECT_DOUBLE_EQ(walls.heading_noise_deg_per_frame, 0.1);
+  EXPECT_DOUBLE_EQ(walls.heading_noise_per_rad, 0.02);
+  EXPECT_DOUBLE_EQ(walls.heading_noise_deg_per_m, 0.5);
+  EXPECT_DOUBLE_EQ(walls.turn_scale_sigma, 0.03);
+  EXPECT_DOUBLE_EQ(walls.gate_sigmas, 4.0);
+  EXPECT_DOUBLE_EQ(walls.max_correction_deg, 8.0);
+  EXPECT_EQ(walls.new_direction_segments, 5);
+  EXPECT_DOUBLE_EQ(walls.new_direction_spread_deg, 1.5);
 }
 
 TEST(LocalizationOptionsTest, RejectsBadValuesAndUnknownKeys) {
   for (const char* body : {"outlier_probability = 1\n", "step_m = 0\n", "min_matched_points = 0\n",
+                           "wall_min_points = 2\n", "wall_max_correction_deg = 45\n",
+                           "wall_new_direction_segments = 0\n",
                            "max_range_m = -1\n", "window = 0.3\n",
                            "min_matched_fraction = 1.5\n"}) {
     const std::string error =

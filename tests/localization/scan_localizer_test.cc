@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <mrpt/core/bits_math.h>
+#include <mrpt/math/wrap2pi.h>
 
 #include "hand_drawn_map.h"
 
@@ -60,6 +61,34 @@ TEST(ScanLocalizerTest, CorrectsOdometryThatDriftsAwayFromTheMap) {
     EXPECT_NEAR(localizer.pose().phi(), truth.phi(), mrpt::DEG2RAD(0.5)) << i;
   }
   EXPECT_GT(std::hypot(odometry.x() - truth.x(), odometry.y() - truth.y()), 0.1);
+}
+
+TEST(ScanLocalizerTest, WithoutMatchingTheWallsStillHoldTheHeading) {
+  // Both windows 0: no match against the map (given empty), the position is odometry's, and the
+  // heading is kept by the room's walls while odometry turns every turn 3% too far. The robot
+  // turns on the spot and steps forward; after 120 frames odometry is 120 * 0.15 * 0.03 rad
+  // (31 degrees) off.
+  LocalizationOptions options = roomOptions();
+  options.window_m = 0.0;
+  options.window_deg = 0.0;
+  ScanLocalizer localizer(options, 0.0);
+  const DisparityTaggedGrid empty = testing::drawGrid({}, -1.0, 5.0, 0.05);
+  mrpt::poses::CPose2D truth(2.0, 2.0, 0.3);
+  mrpt::poses::CPose2D odometry = truth;
+  for (int i = 0; i < 120; ++i) {
+    if (i > 0) {
+      const double forward = i % 10 == 0 ? 0.05 : 0.0;
+      truth = truth + mrpt::poses::CPose2D(forward, 0.0, 0.15);
+      odometry = odometry + mrpt::poses::CPose2D(forward, 0.0, 0.15 * 1.03);
+    }
+    localizer.update(odometry, testing::scanOf(kRoom, truth), empty);
+    if (i >= 60) {
+      EXPECT_NEAR(mrpt::math::wrapToPi(localizer.pose().phi() - truth.phi()), 0.0, mrpt::DEG2RAD(0.3)) << i;
+    }
+  }
+  EXPECT_GT(std::abs(mrpt::math::wrapToPi(odometry.phi() - truth.phi())), mrpt::DEG2RAD(20.0));
+  EXPECT_NEAR(localizer.pose().x(), truth.x(), 0.05);
+  EXPECT_NEAR(localizer.pose().y(), truth.y(), 0.05);
 }
 
 }  // namespace
