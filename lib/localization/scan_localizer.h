@@ -36,7 +36,6 @@ class ScanLocalizer {
   // The last corrected pose (the origin before the first update).
   const mrpt::poses::CPose2D& pose() const { return last_match_.pose; }
   const ScanMatch& lastMatch() const { return last_match_; }
-  const WallHeadingFilter* wallHeading() const { return wall_heading_ ? &*wall_heading_ : nullptr; }
 
  private:
   LocalizationOptions options_;

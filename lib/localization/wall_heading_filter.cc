@@ -3,6 +3,7 @@
 #include <mrpt/core/bits_math.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace stereonav {
 namespace {

@@ -1,6 +1,5 @@
 #pragma once
 
-#include <cmath>
 #include <vector>
 
 #include <Eigen/Core>
@@ -55,8 +54,6 @@ class WallHeadingFilter {
   // it) and drove `driven_m` since the last one, and saw `segments` (robot frame).
   double update(double turn_rad, double driven_m, std::vector<WallSegment> segments);
 
-  double heading() const { return state_.heading; }
-  double headingSigmaRad() const { return std::sqrt(state_.covariance(0, 0)); }
   double turnScale() const { return state_.turn_scale; }
   // Each known pair of wall directions by its member in [-pi/4, pi/4) (the other is 90 degrees on).
   const std::vector<double>& directions() const { return state_.directions; }

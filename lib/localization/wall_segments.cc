@@ -53,9 +53,6 @@ WallSegment fitLine(const std::vector<Point>& points, size_t begin, size_t end) 
   // The slope's standard error: residual variance over the spread along the line.
   segment.sigma_rad = along_sq > 0.0 ? std::sqrt(across_sq / std::max(n - 2.0, 1.0) / along_sq) : M_PI;
   segment.length_m = along_max - along_min;
-  segment.points = static_cast<int>(end - begin);
-  segment.centre_x = mx;
-  segment.centre_y = my;
   return segment;
 }
 

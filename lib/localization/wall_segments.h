@@ -26,8 +26,6 @@ struct WallSegment {
   double direction_rad = 0.0;  // of the fitted line, in [-pi/2, pi/2): a line has no sense
   double sigma_rad = 0.0;      // one sigma of direction_rad, from the fit's residuals
   double length_m = 0.0;
-  int points = 0;
-  double centre_x = 0.0, centre_y = 0.0;
 };
 
 // Straight segments of the scan's valid readings, in ray order: runs broken where neighbours are

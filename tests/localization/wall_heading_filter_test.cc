@@ -66,7 +66,6 @@ WallSegment segmentAlong(double direction_deg) {
   segment.direction_rad = mrpt::DEG2RAD(direction_deg);
   segment.sigma_rad = mrpt::DEG2RAD(0.5);
   segment.length_m = 1.0;
-  segment.points = 20;
   return segment;
 }
 
