@@ -10,6 +10,8 @@
 #include <cmath>
 #include <limits>
 
+#include "localization/scan_points.h"
+
 namespace stereonav {
 namespace {
 
@@ -86,22 +88,15 @@ std::vector<ScanPoint> matchablePoints(const mrpt::obs::CObservation2DRangeScan&
                                        double focal_baseline_px_m,
                                        const LocalizationOptions& options) {
   std::vector<ScanPoint> points;
-  const mrpt::poses::CPose2D sensor(scan.sensorPose);
   double last_x = std::numeric_limits<double>::infinity(), last_y = last_x;
-  for (size_t ray = 0; ray < scan.getScanSize(); ++ray) {
-    if (!scan.getScanRangeValidity(ray)) continue;
-    const double range = scan.getScanRange(ray);
-    if (!(range > 0.0 && range <= options.max_range_m)) continue;
-    const double angle = scan.getScanAngle(ray);
-    const mrpt::poses::CPose2D point =
-        sensor + mrpt::poses::CPose2D(range * std::cos(angle), range * std::sin(angle), 0.0);
-    if (std::hypot(point.x() - last_x, point.y() - last_y) < options.point_spacing_m) continue;
-    last_x = point.x();
-    last_y = point.y();
-    const double range_sigma = focal_baseline_px_m > 0.0
-                                   ? range * range / focal_baseline_px_m * options.disparity_sigma_px
-                                   : 0.0;
-    points.push_back({point.x(), point.y(), std::max(options.min_point_sigma_m, range_sigma)});
+  for (const ScanReadingPoint& reading : scanPointsWithin(scan, options.max_range_m)) {
+    if (std::hypot(reading.x - last_x, reading.y - last_y) < options.point_spacing_m) continue;
+    last_x = reading.x;
+    last_y = reading.y;
+    const double range_sigma = focal_baseline_px_m > 0.0 ? reading.range_m * reading.range_m /
+                                                               focal_baseline_px_m * options.disparity_sigma_px
+                                                         : 0.0;
+    points.push_back({reading.x, reading.y, std::max(options.min_point_sigma_m, range_sigma)});
   }
   return points;
 }

@@ -1,9 +1,11 @@
 #include "localization/wall_segments.h"
 
-#include <mrpt/poses/CPose2D.h>
+#include <mrpt/core/bits_math.h>
 
 #include <algorithm>
 #include <cmath>
+
+#include "localization/scan_points.h"
 
 namespace stereonav {
 namespace {
@@ -21,7 +23,7 @@ double distanceToChord(const Point& p, const Point& a, const Point& b) {
 }
 
 // Total least squares: the line through the centroid along the scatter's major axis.
-WallSegment fitLine(const std::vector<Point>& points, size_t begin, size_t end) {
+WallSegment fitLine(const std::vector<Point>& points, size_t begin, size_t end, int correlated_readings) {
   const double n = static_cast<double>(end - begin);
   double mx = 0.0, my = 0.0;
   for (size_t i = begin; i < end; ++i) {
@@ -48,11 +50,35 @@ WallSegment fitLine(const std::vector<Point>& points, size_t begin, size_t end) 
     along_sq += along * along;
     across_sq += across * across;
   }
+  // The residuals' variance, times the readings that share one error: n readings count as
+  // n / correlated_readings independent ones.
+  const double residual_variance = across_sq / std::max(n - 2.0, 1.0) * std::max(correlated_readings, 1);
   WallSegment segment;
   segment.direction_rad = direction >= M_PI / 2 ? direction - M_PI : direction;
   // The slope's standard error: residual variance over the spread along the line.
-  segment.sigma_rad = along_sq > 0.0 ? std::sqrt(across_sq / std::max(n - 2.0, 1.0) / along_sq) : M_PI;
+  segment.sigma_rad = along_sq > 0.0 ? std::sqrt(residual_variance / along_sq) : M_PI;
   segment.length_m = along_max - along_min;
+  // The normal through the robot: the centroid's component across the line, signed toward it.
+  double across_robot = -s * mx + c * my;
+  double nx = -s, ny = c;
+  if (across_robot < 0.0) {
+    across_robot = -across_robot;
+    nx = -nx;
+    ny = -ny;
+  }
+  segment.normal_rad = std::atan2(ny, nx);
+  segment.offset_m = across_robot;
+  // The centroid's own error, plus the slope's error over the lever from the centroid to the
+  // foot of the normal through the robot.
+  const double lever = c * mx + s * my;
+  segment.offset_sigma_m =
+      std::sqrt(residual_variance / n + mrpt::square(lever * std::min(segment.sigma_rad, 1.0)));
+  const auto ontoLine = [&](const Point& p) {
+    const double along = c * (p.x - mx) + s * (p.y - my);
+    return mrpt::math::TPoint2D(mx + along * c, my + along * s);
+  };
+  segment.first = ontoLine(points[begin]);
+  segment.last = ontoLine(points[end - 1]);
   return segment;
 }
 
@@ -73,7 +99,7 @@ void splitAndFit(const std::vector<Point>& points, size_t begin, size_t end,
     splitAndFit(points, farthest, end, options, segments);
     return;
   }
-  const WallSegment segment = fitLine(points, begin, end);
+  const WallSegment segment = fitLine(points, begin, end, options.correlated_readings);
   if (segment.length_m >= options.min_length_m) segments.push_back(segment);
 }
 
@@ -82,17 +108,8 @@ void splitAndFit(const std::vector<Point>& points, size_t begin, size_t end,
 std::vector<WallSegment> wallSegments(const mrpt::obs::CObservation2DRangeScan& scan,
                                       const WallSegmentOptions& options) {
   std::vector<Point> points;
-  const mrpt::poses::CPose2D sensor(scan.sensorPose);
-  for (size_t ray = 0; ray < scan.getScanSize(); ++ray) {
-    if (!scan.getScanRangeValidity(ray)) continue;
-    const double range = scan.getScanRange(ray);
-    if (!(range > 0.0 && range <= options.max_range_m)) continue;
-    const double angle = scan.getScanAngle(ray);
-    const mrpt::poses::CPose2D point =
-        sensor + mrpt::poses::CPose2D(range * std::cos(angle), range * std::sin(angle), 0.0);
-    // Neighbouring rays that share one column's reading give the same point twice.
-    if (!points.empty() && points.back().x == point.x() && points.back().y == point.y()) continue;
-    points.push_back({point.x(), point.y()});
+  for (const ScanReadingPoint& reading : scanPointsWithin(scan, options.max_range_m)) {
+    points.push_back({reading.x, reading.y});
   }
   std::vector<WallSegment> segments;
   size_t run_begin = 0;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <mrpt/math/TPoint2D.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 
 #include <vector>
@@ -19,6 +20,10 @@ struct WallSegmentOptions {
   // A segment gives a direction only with this many readings over this length.
   int min_points = 12;
   double min_length_m = 0.6;
+  // Neighbouring readings share their errors over this many readings (a stereo scan's columns
+  // share the SAD window: loadMappingOptions sets the [stereo] window), so a segment of n
+  // readings tells its direction and offset as n / correlated_readings independent ones would.
+  int correlated_readings = 1;
 };
 
 // A straight stretch of wall in a scan, in the robot frame.
@@ -26,6 +31,14 @@ struct WallSegment {
   double direction_rad = 0.0;  // of the fitted line, in [-pi/2, pi/2): a line has no sense
   double sigma_rad = 0.0;      // one sigma of direction_rad, from the fit's residuals
   double length_m = 0.0;
+  // The line's nearest point to the robot is offset_m away along normal_rad (in [-pi, pi)): the
+  // side of the wall the robot sees, and how far the wall is, whatever the robot's heading.
+  double normal_rad = 0.0;
+  double offset_m = 0.0;
+  double offset_sigma_m = 0.0;  // one sigma of offset_m, from the fit's residuals
+  // The stretch's ends, its first and last readings put onto the line.
+  mrpt::math::TPoint2D first;
+  mrpt::math::TPoint2D last;
 };
 
 // Straight segments of the scan's valid readings, in ray order: runs broken where neighbours are

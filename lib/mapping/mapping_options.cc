@@ -51,6 +51,9 @@ MappingOptions loadMappingOptions(const mrpt::config::CConfigFileBase& config) {
   }
   options.mapper = loadIniSection(config, "mapping", loadMapperOptions);
   options.localization = loadIniSection(config, "localization", loadLocalizationOptions);
+  // The scan's readings come one per column, and neighbouring columns' disparities share most of
+  // their SAD window, so their errors too.
+  options.localization.walls.segments.correlated_readings = options.stereo.window;
   if (options.rig && options.stereo.backend != StereoBackend::kSad && options.rig->secondaries.size() != 1) {
     throw ConfigError(std::string("[stereo] backend: ") + toString(options.stereo.backend) +
                       " (OpenCV) takes exactly one secondary camera; [rig] secondary_cameras has " +

@@ -29,6 +29,34 @@ TEST(WallSegmentsTest, AWallAheadIsOneSegmentAcrossTheRobotsHeading) {
   // deg) = -0.70 on, up to where it leaves max_range_m (2.5 m): y = sqrt(2.5^2 - 1.5^2) = 2.
   EXPECT_NEAR(segments[0].length_m, 2.7, 0.05);
   EXPECT_LT(segments[0].sigma_rad, mrpt::DEG2RAD(0.1));
+  // The wall's nearest point is 1.5 m along world +x: -20 degrees in the robot's frame.
+  EXPECT_NEAR(segments[0].offset_m, 1.5, 0.005);
+  EXPECT_NEAR(segments[0].normal_rad, mrpt::DEG2RAD(-20.0), mrpt::DEG2RAD(0.1));
+  EXPECT_LT(segments[0].offset_sigma_m, 0.005);
+  // Its ends, back in the world, lie on the wall at y = -0.70 and y = 2.
+  const mrpt::poses::CPose2D first = robot + mrpt::poses::CPose2D(segments[0].first.x, segments[0].first.y, 0.0);
+  const mrpt::poses::CPose2D last = robot + mrpt::poses::CPose2D(segments[0].last.x, segments[0].last.y, 0.0);
+  EXPECT_NEAR(first.x(), 1.5, 0.005);
+  EXPECT_NEAR(first.y(), 1.5 * std::tan(mrpt::DEG2RAD(-25.0)), 0.05);
+  EXPECT_NEAR(last.x(), 1.5, 0.005);
+  EXPECT_NEAR(last.y(), 2.0, 0.05);
+}
+
+TEST(WallSegmentsTest, ReadingsThatShareTheirErrorsGiveWiderSigmas) {
+  // The same noisy wall: readings that share their errors over 9 neighbours (a stereo scan's
+  // SAD window) count as a ninth as many, so both sigmas are 3 times wider.
+  const std::vector<testing::Segment> wall = {{1.5, -3.0, 1.5, 3.0}};
+  mrpt::obs::CObservation2DRangeScan scan = testing::scanOf(wall, mrpt::poses::CPose2D());
+  for (size_t ray = 0; ray < scan.getScanSize(); ray += 2) scan.setScanRange(ray, scan.getScanRange(ray) - 0.02f);
+  WallSegmentOptions correlated;
+  correlated.correlated_readings = 9;
+  const std::vector<WallSegment> independent = wallSegments(scan, WallSegmentOptions{});
+  const std::vector<WallSegment> shared = wallSegments(scan, correlated);
+  ASSERT_EQ(independent.size(), 1u);
+  ASSERT_EQ(shared.size(), 1u);
+  EXPECT_NEAR(shared[0].direction_rad, independent[0].direction_rad, 1e-12);
+  EXPECT_NEAR(shared[0].sigma_rad, 3.0 * independent[0].sigma_rad, 1e-9);
+  EXPECT_NEAR(shared[0].offset_sigma_m, 3.0 * independent[0].offset_sigma_m, 1e-6);
 }
 
 TEST(WallSegmentsTest, ACornerSplitsIntoItsTwoWalls) {

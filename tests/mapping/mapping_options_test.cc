@@ -24,7 +24,7 @@ TEST(MappingOptionsTest, EachSectionGoesToItsStage) {
   const MappingOptions options = load(
       "[rig]\nwidth = 160\nheight = 120\nfocal_px = 80\ncx = 79.5\ncy = 59.5\n"
       "[rawlog]\nsensor_label = HEAD\ntolerance_focal_px = 2\n"
-      "[stereo]\nmax_disparity = 15\n"
+      "[stereo]\nmax_disparity = 15\nwindow = 9\n"
       "[spike_removal]\nmin_region_pixels = 20\n"
       "[projection]\nrobot_height_m = 1.5\n"
       "[grid]\nmodel = mrpt_bayes\nresolution = 0.1\n"
@@ -34,6 +34,8 @@ TEST(MappingOptionsTest, EachSectionGoesToItsStage) {
   EXPECT_EQ(options.sensor_label, "HEAD");
   EXPECT_EQ(options.calibration_tolerance.focal_px, 2.0);
   EXPECT_EQ(options.stereo.max_disparity, 15);
+  // The localizer's wall segments count a scan's readings as sharing their errors over the window.
+  EXPECT_EQ(options.localization.walls.segments.correlated_readings, 9);
   EXPECT_EQ(options.spike_removal.segmentation.min_region_pixels, 20);
   EXPECT_EQ(options.projection.robot_height_m, 1.5);
   EXPECT_EQ(options.grid.model, GridModel::kMrptBayes);
