@@ -52,6 +52,14 @@ LocalizationOptions loadLocalizationOptions(IniSection& section) {
     throw ConfigError("[" + section.name() + "] wall_new_direction_segments: must be >= 1");
   }
   walls.new_direction_spread_deg = section.getPositive("wall_new_direction_spread_deg", walls.new_direction_spread_deg);
+  walls.agreeing_segments = section.getInt("wall_agreeing_segments", walls.agreeing_segments);
+  if (walls.agreeing_segments < 1) throw ConfigError("[" + section.name() + "] wall_agreeing_segments: must be >= 1");
+  WallPositionOptions& position = options.wall_position;
+  position.enabled = section.getBool("wall_offsets", position.enabled);
+  position.position_noise_per_m = section.getNonNegative("position_noise_per_m", position.position_noise_per_m);
+  position.distance_scale_sigma = section.getNonNegative("distance_scale_sigma", position.distance_scale_sigma);
+  position.min_offset_sigma_m = section.getPositive("wall_min_offset_sigma_m", position.min_offset_sigma_m);
+  position.max_join_gap_m = section.getNonNegative("wall_max_join_gap_m", position.max_join_gap_m);
   return options;
 }
 

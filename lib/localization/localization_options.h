@@ -2,11 +2,13 @@
 
 #include "common/ini_section.h"
 #include "localization/wall_heading_filter.h"
+#include "localization/wall_position_filter.h"
 
 namespace stereonav {
 
 // How ScanLocalizer corrects odometry by each stereo scan (section [localization]): the
-// correlative matcher against the map built so far, then the heading by the walls' directions.
+// correlative matcher against the map built so far, then the heading by the walls' directions
+// and the position by the walls' offsets.
 // The paper maps with dead reckoning and names its drift as the open problem (section 5).
 struct LocalizationOptions {
   // Only readings nearer than this take part: a stereo reading's range error grows with the
@@ -47,8 +49,12 @@ struct LocalizationOptions {
   // Keys wall_max_range_m, wall_max_gap_m, wall_split_tolerance_m, wall_min_points,
   // wall_min_length_m, wall_min_sigma_deg, heading_noise_deg_per_frame, heading_noise_per_rad,
   // heading_noise_deg_per_m, turn_scale_sigma, wall_gate_sigmas, wall_max_correction_deg,
-  // wall_new_direction_segments, wall_new_direction_spread_deg. wall_max_range_m = 0: no walls.
+  // wall_new_direction_segments, wall_new_direction_spread_deg, wall_agreeing_segments.
+  // wall_max_range_m = 0: no walls.
   WallHeadingOptions walls;
+  // Keys wall_offsets (true/false), position_noise_per_m, distance_scale_sigma,
+  // wall_min_offset_sigma_m, wall_max_join_gap_m.
+  WallPositionOptions wall_position;
 
   bool matches() const { return window_m > 0.0 || window_deg > 0.0; }
 };

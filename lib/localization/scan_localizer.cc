@@ -32,12 +32,21 @@ const ScanMatch& ScanLocalizer::update(const mrpt::poses::CPose2D& odometry,
     last_match_ = ScanMatch();
     last_match_.pose = predicted;
   }
-  if (!wall_heading_) wall_heading_.emplace(options_.walls, odometry.phi());
-  // The turn as matched where the match pinned the heading, as odometry measured it otherwise.
-  const double turn = mrpt::math::wrapToPi(last_match_.pose.phi() - previous.phi());
-  last_match_.pose.phi(mrpt::math::wrapToPi(
-      wall_heading_->update(turn, motion.norm(), wallSegments(scan, options_.walls.segments))));
-  if (wall_heading_->lastFrameCorrections() > 0) last_match_.corrected = true;
+  if (!wall_heading_) {
+    wall_heading_.emplace(options_.walls, odometry.phi());
+    wall_position_.emplace(options_.wall_position, options_.walls, Eigen::Vector2d(odometry.x(), odometry.y()));
+  }
+  const std::vector<WallSegment> segments = wallSegments(scan, options_.walls.segments);
+  // The motion as matched where the match pinned it down, as odometry measured it otherwise.
+  const mrpt::poses::CPose2D moved = last_match_.pose - previous;
+  const double heading = mrpt::math::wrapToPi(wall_heading_->update(moved.phi(), motion.norm(), segments));
+  const Eigen::Vector2d position =
+      wall_position_->update(Eigen::Vector2d(moved.x(), moved.y()), previous.phi(), heading,
+                             wall_heading_->headingVariance(), wall_heading_->directions(), segments);
+  last_match_.pose = mrpt::poses::CPose2D(position.x(), position.y(), heading);
+  if (wall_heading_->lastFrameCorrections() > 0 || wall_position_->lastFrameCorrections() > 0) {
+    last_match_.corrected = true;
+  }
   return last_match_;
 }
 

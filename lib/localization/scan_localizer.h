@@ -8,6 +8,7 @@
 #include "localization/localization_options.h"
 #include "localization/scan_matcher.h"
 #include "localization/wall_heading_filter.h"
+#include "localization/wall_position_filter.h"
 #include "occupancy_grid/disparity_tagged_grid.h"
 
 namespace stereonav {
@@ -17,7 +18,9 @@ namespace stereonav {
 //  1. the odometry motion since the previous frame, added to the last corrected pose, is matched
 //     against the map built from the frames before it (matchScan; skipped when both windows are 0);
 //  2. the heading is then kept by the directions of the walls the scan sees (WallHeadingFilter),
-//     which does not drift as odometry and the match against a map built from drifting poses do.
+//     which does not drift as odometry and the match against a map built from drifting poses do;
+//  3. and the position by the walls' offsets (WallPositionFilter), each wall seen again telling
+//     how far the robot has drifted since it was first seen.
 // The map's frame is the first frame's odometry frame.
 //
 //   ScanLocalizer localizer(options.localization, rig.reference.focal_px * rig.baseline_m);
@@ -44,6 +47,7 @@ class ScanLocalizer {
   std::optional<mrpt::poses::CPose2D> last_odometry_;
   ScanMatch last_match_;
   std::optional<WallHeadingFilter> wall_heading_;  // from the first frame on
+  std::optional<WallPositionFilter> wall_position_;
 };
 
 }  // namespace stereonav

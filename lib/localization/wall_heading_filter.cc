@@ -6,39 +6,45 @@
 #include <cmath>
 
 namespace stereonav {
-namespace {
 
-// The difference of two directions of a pair of perpendicular lines, in [-pi/4, pi/4).
-double pairAngleDifference(double a, double b) {
+double perpendicularPairDifference(double a, double b) {
   double d = std::remainder(a - b, M_PI / 2);
   if (d >= M_PI / 4) d -= M_PI / 2;
   return d;
 }
 
-double pairDirection(double a) { return pairAngleDifference(a, 0.0); }
+namespace {
+
+double pairDirection(double a) { return perpendicularPairDifference(a, 0.0); }
 
 }  // namespace
 
 WallHeadingFilter::WallHeadingFilter(const WallHeadingOptions& options, double start_heading)
-    : options_(options), start_heading_(start_heading), state_(startState()) {}
+    : options_(options), start_heading_(start_heading), state_(startState(false)) {}
 
-WallHeadingFilter::State WallHeadingFilter::startState() const {
+WallHeadingFilter::State WallHeadingFilter::startState(bool direction_confirmed) const {
   State state;
   state.heading = start_heading_;
   state.covariance = Eigen::MatrixXd::Zero(2, 2);
+  // Until a direction is known the scale's doubt would only widen the heading's, and keep the
+  // votes for the first direction from agreeing. Once one is, the filter runs again from the
+  // start with it, so that the heading at a direction's first sighting carries the scale's error
+  // of the turns before, and learning the scale later corrects the direction too.
+  if (direction_confirmed) state.covariance(1, 1) = mrpt::square(options_.turn_scale_sigma);
   return state;
 }
 
 double WallHeadingFilter::update(double turn_rad, double driven_m, std::vector<WallSegment> segments) {
   frames_.push_back({turn_rad, driven_m, std::move(segments)});
   if (step(state_, frames_.back(), true)) {
-    state_ = startState();
+    state_ = startState(true);
     for (const Frame& frame : frames_) step(state_, frame, false);
   }
   return state_.heading;
 }
 
 bool WallHeadingFilter::step(State& state, const Frame& frame, bool vote) {
+  const double variance_before = state.covariance(0, 0);
   state.heading += state.turn_scale * frame.turn_rad;
   Eigen::MatrixXd jacobian = Eigen::MatrixXd::Identity(state.covariance.rows(), state.covariance.cols());
   jacobian(0, 1) = frame.turn_rad;
@@ -49,6 +55,12 @@ bool WallHeadingFilter::step(State& state, const Frame& frame, bool vote) {
   const double min_sigma = mrpt::DEG2RAD(options_.min_sigma_deg);
   const double max_correction = mrpt::DEG2RAD(options_.max_correction_deg);
   const double spread = mrpt::DEG2RAD(options_.new_direction_spread_deg);
+  // A held segment is dropped once odometry may have turned the heading more than `spread` since.
+  for (HeldSegment& held : state.held) held.added_variance += state.covariance(0, 0) - variance_before;
+  state.held.erase(std::remove_if(state.held.begin(), state.held.end(),
+                                  [&](const HeldSegment& held) { return held.added_variance > spread * spread; }),
+                   state.held.end());
+  const bool unsure = state.covariance(0, 0) > spread * spread;
   bool confirmed = false;
   state.frame_corrections = 0;
   for (const WallSegment& segment : frame.segments) {
@@ -57,7 +69,7 @@ bool WallHeadingFilter::step(State& state, const Frame& frame, bool vote) {
     size_t nearest = state.directions.size();
     double innovation = M_PI;
     for (size_t i = 0; i < state.directions.size(); ++i) {
-      const double difference = pairAngleDifference(world, state.directions[i]);
+      const double difference = perpendicularPairDifference(world, state.directions[i]);
       if (std::abs(difference) < std::abs(innovation)) {
         innovation = difference;
         nearest = i;
@@ -65,9 +77,9 @@ bool WallHeadingFilter::step(State& state, const Frame& frame, bool vote) {
     }
     if (std::abs(innovation) > max_correction) {
       const auto first_sighting = std::find_if(confirmed_.begin(), confirmed_.end(), [&](double direction) {
-        return std::abs(pairAngleDifference(world, direction)) <= spread &&
+        return std::abs(perpendicularPairDifference(world, direction)) <= spread &&
                std::none_of(state.directions.begin(), state.directions.end(), [&](double known) {
-                 return std::abs(pairAngleDifference(direction, known)) <= max_correction;
+                 return std::abs(perpendicularPairDifference(direction, known)) <= max_correction;
                });
       });
       if (first_sighting != confirmed_.end()) {
@@ -77,9 +89,6 @@ bool WallHeadingFilter::step(State& state, const Frame& frame, bool vote) {
         state.covariance.row(n).head(n) = state.covariance.row(0).head(n);
         state.covariance.col(n).head(n) = state.covariance.col(0).head(n);
         state.covariance(n, n) = state.covariance(0, 0) + sigma * sigma;
-        // Until a direction can be seen again after a turn the scale cannot be told, and letting
-        // its doubt into the heading before would keep the first direction from being taken up.
-        if (state.directions.empty()) state.covariance(1, 1) = mrpt::square(options_.turn_scale_sigma);
         state.directions.push_back(world);
       } else if (vote) {
         confirmed = voteFor(world, std::sqrt(state.covariance(0, 0) + sigma * sigma)) || confirmed;
@@ -90,19 +99,55 @@ bool WallHeadingFilter::step(State& state, const Frame& frame, bool vote) {
     const double innovation_variance = state.covariance(0, 0) + state.covariance(d, d) -
                                        2.0 * state.covariance(0, d) + sigma * sigma;
     if (innovation * innovation > mrpt::square(options_.gate_sigmas) * innovation_variance) continue;
-    // The segment's direction predicted from the state is direction - heading: H = [-1 0 .. 1 ..],
-    // and the innovation (world - direction) is measured minus predicted.
-    const Eigen::VectorXd gain = (state.covariance.col(d) - state.covariance.col(0)) / innovation_variance;
-    state.heading += gain(0) * innovation;
-    state.turn_scale += gain(1) * innovation;
-    for (size_t i = 0; i < state.directions.size(); ++i) {
-      state.directions[i] = pairDirection(state.directions[i] + gain(2 + static_cast<Eigen::Index>(i)) * innovation);
+    if (unsure) {
+      state.held.push_back({nearest, innovation, sigma, 0.0});
+    } else {
+      correct(state, nearest, innovation, sigma);
     }
-    const Eigen::RowVectorXd h_covariance = state.covariance.row(d) - state.covariance.row(0);
-    state.covariance -= gain * h_covariance;
-    ++state.frame_corrections;
   }
+  if (!unsure) {
+    state.held.clear();
+    return confirmed;
+  }
+  // Unsure, the gate is wide and one askew segment (a chair, a person) could take the heading
+  // anywhere within it: correct only once enough segments, in this frame or the last few, agree.
+  std::vector<size_t> agreeing;
+  for (const HeldSegment& held : state.held) {
+    std::vector<size_t> members;
+    for (size_t i = 0; i < state.held.size(); ++i) {
+      if (std::abs(state.held[i].innovation - held.innovation) <= spread) members.push_back(i);
+    }
+    if (members.size() > agreeing.size()) agreeing = std::move(members);
+  }
+  if (static_cast<int>(agreeing.size()) < options_.agreeing_segments) return confirmed;
+  // Each correction moves the heading and the directions; the later ones are measured from there.
+  const double heading = state.heading;
+  const std::vector<double> directions = state.directions;
+  for (const size_t i : agreeing) {
+    const HeldSegment& held = state.held[i];
+    const double innovation = held.innovation + (state.heading - heading) -
+                              perpendicularPairDifference(state.directions[held.direction], directions[held.direction]);
+    correct(state, held.direction, innovation, held.sigma);
+  }
+  state.held.clear();
   return confirmed;
+}
+
+void WallHeadingFilter::correct(State& state, size_t direction, double innovation, double sigma) const {
+  const Eigen::Index d = 2 + static_cast<Eigen::Index>(direction);
+  const double innovation_variance =
+      state.covariance(0, 0) + state.covariance(d, d) - 2.0 * state.covariance(0, d) + sigma * sigma;
+  // The segment's direction predicted from the state is direction - heading: H = [-1 0 .. 1 ..],
+  // and the innovation (world - direction) is measured minus predicted.
+  const Eigen::VectorXd gain = (state.covariance.col(d) - state.covariance.col(0)) / innovation_variance;
+  state.heading += gain(0) * innovation;
+  state.turn_scale += gain(1) * innovation;
+  for (size_t i = 0; i < state.directions.size(); ++i) {
+    state.directions[i] = pairDirection(state.directions[i] + gain(2 + static_cast<Eigen::Index>(i)) * innovation);
+  }
+  const Eigen::RowVectorXd h_covariance = state.covariance.row(d) - state.covariance.row(0);
+  state.covariance -= gain * h_covariance;
+  ++state.frame_corrections;
 }
 
 bool WallHeadingFilter::voteFor(double world_direction, double sigma) {
@@ -110,7 +155,7 @@ bool WallHeadingFilter::voteFor(double world_direction, double sigma) {
   if (sigma > spread) return false;  // the heading is too unsure to tell where the wall runs
   const double weight = 1.0 / (sigma * sigma);
   for (Candidate& candidate : candidates_) {
-    const double difference = pairAngleDifference(world_direction, candidate.direction);
+    const double difference = perpendicularPairDifference(world_direction, candidate.direction);
     if (std::abs(difference) > spread) continue;
     candidate.direction = pairDirection(candidate.direction + difference * weight / (candidate.weight + weight));
     candidate.weight += weight;

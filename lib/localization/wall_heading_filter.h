@@ -8,6 +8,9 @@
 
 namespace stereonav {
 
+// The difference a - b of two directions of pairs of perpendicular lines, in [-pi/4, pi/4).
+double perpendicularPairDifference(double a, double b);
+
 // How WallHeadingFilter keeps the heading by the walls' directions (keys of [localization]).
 struct WallHeadingOptions {
   WallSegmentOptions segments;
@@ -29,6 +32,11 @@ struct WallHeadingOptions {
   // max_correction_deg from every known direction, agree on it within new_direction_spread_deg.
   int new_direction_segments = 8;
   double new_direction_spread_deg = 2.0;
+  // While the heading is unsure (one sigma beyond new_direction_spread_deg, after turning with no
+  // wall in view), the gate is wide and one askew segment (a chair, a person) could pull the
+  // heading anywhere within it: segments then correct it only once this many, in one frame or a
+  // few, agree within new_direction_spread_deg.
+  int agreeing_segments = 3;
 };
 
 // Keeps the robot's heading from drifting by the directions of the building's walls: walls run
@@ -54,6 +62,7 @@ class WallHeadingFilter {
   // it) and drove `driven_m` since the last one, and saw `segments` (robot frame).
   double update(double turn_rad, double driven_m, std::vector<WallSegment> segments);
 
+  double headingVariance() const { return state_.covariance(0, 0); }
   double turnScale() const { return state_.turn_scale; }
   // Each known pair of wall directions by its member in [-pi/4, pi/4) (the other is 90 degrees on).
   const std::vector<double>& directions() const { return state_.directions; }
@@ -61,12 +70,20 @@ class WallHeadingFilter {
   int lastFrameCorrections() const { return state_.frame_corrections; }
 
  private:
+  // A segment that passed the gate while the heading was unsure, waiting for others to agree.
+  struct HeldSegment {
+    size_t direction = 0;
+    double innovation = 0.0;
+    double sigma = 0.0;
+    double added_variance = 0.0;  // the heading's since the segment was seen
+  };
   struct State {
     double heading = 0.0;
     double turn_scale = 1.0;
     std::vector<double> directions;
     Eigen::MatrixXd covariance;  // of (heading, turn scale, directions...)
     int frame_corrections = 0;
+    std::vector<HeldSegment> held;
   };
   struct Frame {
     double turn_rad = 0.0;
@@ -82,8 +99,10 @@ class WallHeadingFilter {
   // Runs `frame` through `state`; segments far from every direction of `state` vote for new
   // directions when `vote` is set. Returns true when a vote confirms one.
   bool step(State& state, const Frame& frame, bool vote);
+  // The Kalman update of `state` by a segment along `direction` with that innovation.
+  void correct(State& state, size_t direction, double innovation, double sigma) const;
   bool voteFor(double world_direction, double sigma);
-  State startState() const;
+  State startState(bool direction_confirmed) const;
 
   WallHeadingOptions options_;
   double start_heading_;

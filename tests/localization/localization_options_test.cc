@@ -21,7 +21,8 @@ TEST(LocalizationOptionsTest, LoadsEveryKey) {
       "wall_min_length_m = 0.8\nwall_min_sigma_deg = 0.4\nheading_noise_deg_per_frame = 0.1\n"
       "heading_noise_per_rad = 0.02\nheading_noise_deg_per_m = 0.5\nturn_scale_sigma = 0.03\n"
       "wall_gate_sigmas = 4\nwall_max_correction_deg = 8\nwall_new_direction_segments = 5\n"
-      "wall_new_direction_spread_deg = 1.5\n",
+      "wall_new_direction_spread_deg = 1.5\nwall_agreeing_segments = 2\nwall_offsets = false\nposition_noise_per_m = 0.04\n"
+      "distance_scale_sigma = 0.02\nwall_min_offset_sigma_m = 0.03\nwall_max_join_gap_m = 2\n",
       loadLocalizationOptions);
   EXPECT_DOUBLE_EQ(options.max_range_m, 3.0);
   EXPECT_DOUBLE_EQ(options.point_spacing_m, 0.1);
@@ -54,6 +55,13 @@ TEST(LocalizationOptionsTest, LoadsEveryKey) {
   EXPECT_DOUBLE_EQ(walls.max_correction_deg, 8.0);
   EXPECT_EQ(walls.new_direction_segments, 5);
   EXPECT_DOUBLE_EQ(walls.new_direction_spread_deg, 1.5);
+  EXPECT_EQ(walls.agreeing_segments, 2);
+  const WallPositionOptions& position = options.wall_position;
+  EXPECT_FALSE(position.enabled);
+  EXPECT_DOUBLE_EQ(position.position_noise_per_m, 0.04);
+  EXPECT_DOUBLE_EQ(position.distance_scale_sigma, 0.02);
+  EXPECT_DOUBLE_EQ(position.min_offset_sigma_m, 0.03);
+  EXPECT_DOUBLE_EQ(position.max_join_gap_m, 2.0);
 }
 
 TEST(LocalizationOptionsTest, RejectsBadValuesAndUnknownKeys) {
@@ -61,7 +69,8 @@ TEST(LocalizationOptionsTest, RejectsBadValuesAndUnknownKeys) {
                            "wall_min_points = 2\n", "wall_max_correction_deg = 45\n",
                            "wall_new_direction_segments = 0\n",
                            "max_range_m = -1\n", "window = 0.3\n",
-                           "min_matched_fraction = 1.5\n"}) {
+                           "min_matched_fraction = 1.5\n", "wall_min_offset_sigma_m = 0\n",
+                           "wall_offsets = maybe\n", "wall_agreeing_segments = 0\n"}) {
     const std::string error =
         configErrorOf([&] { loadSectionText("localization", body, loadLocalizationOptions); });
     EXPECT_NE(error.find("[localization]"), std::string::npos) << body << ": " << error;

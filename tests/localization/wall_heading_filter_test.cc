@@ -82,11 +82,29 @@ TEST(WallHeadingFilterTest, ADirectionCountsOnlyOnceEnoughSegmentsAgreeOnIt) {
   filter.update(0.0, 0.0, {segmentAlong(25.0)});
   ASSERT_EQ(filter.directions().size(), 1u);
   EXPECT_NEAR(filter.directions()[0], mrpt::DEG2RAD(25.0), 1e-9);
-  // A wall perpendicular to it, seen 1 degree off after a turn, now corrects the heading:
-  // odometry says 90 degrees, the wall says 91 (or the turn was 1 degree short).
-  const double heading = filter.update(mrpt::DEG2RAD(90.0), 0.0, {segmentAlong(26.0)});
+  // Walls perpendicular to it, seen 1 degree off after a turn, now correct the heading:
+  // odometry says 90 degrees, the walls say 91 (or the turn was 1 degree short).
+  const double heading =
+      filter.update(mrpt::DEG2RAD(90.0), 0.0, {segmentAlong(26.0), segmentAlong(26.0), segmentAlong(26.0)});
   EXPECT_LT(heading, mrpt::DEG2RAD(90.0));
   EXPECT_GT(heading, mrpt::DEG2RAD(89.0));
+}
+
+TEST(WallHeadingFilterTest, AnUnsureHeadingIsCorrectedOnlyBySegmentsThatAgree) {
+  // The direction 0 known, then a half turn with no wall in view leaves the heading unsure (a few
+  // degrees). One segment 6 degrees off (a desk set askew) is within the wide gate but alone:
+  // the heading stays odometry's. Three segments 1 degree off, over two frames, agree that the
+  // heading is 1 degree less (a wall at 0 seen along +1): they correct it by most of that degree.
+  WallHeadingFilter filter(WallHeadingOptions{}, 0.0);
+  for (int frame = 0; frame < 10; ++frame) filter.update(0.0, 0.0, {segmentAlong(0.0)});
+  ASSERT_EQ(filter.directions().size(), 1u);
+  for (int frame = 0; frame < 6; ++frame) filter.update(M_PI / 6, 0.0, {});
+  ASSERT_GT(std::sqrt(filter.headingVariance()), mrpt::DEG2RAD(WallHeadingOptions{}.new_direction_spread_deg));
+  EXPECT_NEAR(filter.update(0.0, 0.0, {segmentAlong(6.0)}), M_PI, 1e-9);
+  EXPECT_NEAR(filter.update(0.0, 0.0, {segmentAlong(1.0)}), M_PI, 1e-9);
+  const double heading = filter.update(0.0, 0.0, {segmentAlong(1.0), segmentAlong(1.0)});
+  EXPECT_LT(heading, M_PI - mrpt::DEG2RAD(0.7));
+  EXPECT_GT(heading, M_PI - mrpt::DEG2RAD(1.0));
 }
 
 TEST(WallHeadingFilterTest, WithoutWallsTheHeadingIsOdometrys) {

@@ -1,0 +1,155 @@
+#include "localization/wall_position_filter.h"
+
+#include <mrpt/core/bits_math.h>
+#include <mrpt/math/wrap2pi.h>
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+
+namespace stereonav {
+namespace {
+
+constexpr Eigen::Index kScale = 2;
+constexpr Eigen::Index kFirstWall = 3;
+
+Eigen::Vector2d unit(double angle) { return {std::cos(angle), std::sin(angle)}; }
+
+// A wall line's direction: its normal turned a quarter turn counterclockwise.
+Eigen::Vector2d along(double normal_rad) { return unit(normal_rad + M_PI / 2); }
+
+}  // namespace
+
+WallPositionFilter::WallPositionFilter(const WallPositionOptions& options,
+                                       const WallHeadingOptions& heading_options, const Eigen::Vector2d& start)
+    : options_(options),
+      gate_sigmas_(heading_options.gate_sigmas),
+      max_direction_rad_(mrpt::DEG2RAD(heading_options.max_correction_deg)),
+      state_(Eigen::Vector3d(start.x(), start.y(), 1.0)),
+      covariance_(Eigen::Matrix3d::Zero()) {
+  covariance_(kScale, kScale) = mrpt::square(options.distance_scale_sigma);
+}
+
+Eigen::Vector2d WallPositionFilter::update(const Eigen::Vector2d& displacement, double previous_heading,
+                                           double heading, double heading_variance,
+                                           const std::vector<double>& directions,
+                                           const std::vector<WallSegment>& segments) {
+  predict(displacement, previous_heading, heading_variance);
+  frame_corrections_ = 0;
+  if (!options_.enabled) return position();
+  const Eigen::Vector2d robot = position();
+  const double c = std::cos(heading), s = std::sin(heading);
+  const auto toWorld = [&](const mrpt::math::TPoint2D& p) {
+    return Eigen::Vector2d(robot.x() + c * p.x - s * p.y, robot.y() + s * p.x + c * p.y);
+  };
+  for (const WallSegment& segment : segments) {
+    const double seen = segment.normal_rad + heading;
+    double snap = M_PI;
+    for (const double direction : directions) {
+      const double difference = perpendicularPairDifference(seen, direction);
+      if (std::abs(difference) < std::abs(snap)) snap = difference;
+    }
+    if (std::abs(snap) > max_direction_rad_) continue;
+    const double normal = mrpt::math::wrapToPi(seen - snap);
+    const double variance = mrpt::square(std::max(segment.offset_sigma_m, options_.min_offset_sigma_m));
+    const Eigen::Vector2d t = along(normal);
+    const double a = t.dot(toWorld(segment.first)), b = t.dot(toWorld(segment.last));
+    const size_t wall = associate(normal, segment.offset_m, variance, std::min(a, b), std::max(a, b));
+    if (wall == walls_.size()) {
+      addWall(normal, segment.offset_m, variance, std::min(a, b), std::max(a, b));
+      continue;
+    }
+    turnWall(wall, normal);
+    correct(wall, segment.offset_m, variance);
+    // The stretch as seen from the corrected position.
+    const Eigen::Vector2d shift = position() - robot;
+    walls_[wall].along_min = std::min(walls_[wall].along_min, std::min(a, b) + t.dot(shift));
+    walls_[wall].along_max = std::max(walls_[wall].along_max, std::max(a, b) + t.dot(shift));
+    ++frame_corrections_;
+  }
+  return position();
+}
+
+void WallPositionFilter::predict(const Eigen::Vector2d& displacement, double previous_heading,
+                                 double heading_variance) {
+  const Eigen::Vector2d moved = Eigen::Rotation2Dd(previous_heading) * displacement;
+  state_.head<2>() += state_(kScale) * moved;
+  // F = I but for d position / d scale = moved; F P F^T by rows, then by columns.
+  covariance_.row(0) += moved.x() * covariance_.row(kScale);
+  covariance_.row(1) += moved.y() * covariance_.row(kScale);
+  covariance_.col(0) += moved.x() * covariance_.col(kScale);
+  covariance_.col(1) += moved.y() * covariance_.col(kScale);
+  const double driven = moved.norm();
+  if (driven <= 0.0) return;
+  const Eigen::Vector2d across = Eigen::Vector2d(-moved.y(), moved.x()) / driven;
+  covariance_.topLeftCorner<2, 2>() += mrpt::square(options_.position_noise_per_m * driven) * Eigen::Matrix2d::Identity() +
+                                       driven * driven * heading_variance * across * across.transpose();
+}
+
+size_t WallPositionFilter::associate(double normal_rad, double offset_m, double variance, double along_min,
+                                     double along_max) const {
+  const Eigen::Vector2d n = unit(normal_rad);
+  size_t best = walls_.size();
+  double best_distance = mrpt::square(gate_sigmas_);
+  for (size_t i = 0; i < walls_.size(); ++i) {
+    const WallLine& wall = walls_[i];
+    if (std::abs(mrpt::math::wrapToPi(wall.normal_rad - normal_rad)) > max_direction_rad_) continue;
+    if (along_min - wall.along_max > options_.max_join_gap_m || wall.along_min - along_max > options_.max_join_gap_m) {
+      continue;
+    }
+    const Eigen::Index w = kFirstWall + static_cast<Eigen::Index>(i);
+    const double innovation = offset_m - (state_(w) - n.dot(state_.head<2>()));
+    const double innovation_variance = n.dot(covariance_.topLeftCorner<2, 2>() * n) + covariance_(w, w) -
+                                       2.0 * n.dot(covariance_.block<2, 1>(0, w)) + variance;
+    const double distance = innovation * innovation / innovation_variance;
+    if (distance < best_distance) {
+      best_distance = distance;
+      best = i;
+    }
+  }
+  return best;
+}
+
+void WallPositionFilter::correct(size_t wall, double offset_m, double variance) {
+  const Eigen::Vector2d n = unit(walls_[wall].normal_rad);
+  const Eigen::Index w = kFirstWall + static_cast<Eigen::Index>(wall);
+  // The offset predicted from the state is wall offset - n . position: H = [-n 0 .. 1 ..].
+  const double innovation = offset_m - (state_(w) - n.dot(state_.head<2>()));
+  const Eigen::RowVectorXd h_covariance =
+      covariance_.row(w) - n.x() * covariance_.row(0) - n.y() * covariance_.row(1);
+  const double innovation_variance = h_covariance(w) - n.x() * h_covariance(0) - n.y() * h_covariance(1) + variance;
+  const Eigen::VectorXd gain = h_covariance.transpose() / innovation_variance;
+  state_ += gain * innovation;
+  covariance_ -= gain * h_covariance;
+}
+
+void WallPositionFilter::addWall(double normal_rad, double offset_m, double variance, double along_min,
+                                 double along_max) {
+  const Eigen::Vector2d n = unit(normal_rad);
+  const Eigen::Index size = state_.size();
+  // Measured from the position, the wall's offset shares its error, plus its own.
+  const Eigen::RowVectorXd from_position = n.x() * covariance_.row(0) + n.y() * covariance_.row(1);
+  state_.conservativeResize(size + 1);
+  state_(size) = n.dot(state_.head<2>()) + offset_m;
+  covariance_.conservativeResize(size + 1, size + 1);
+  covariance_.row(size).head(size) = from_position;
+  covariance_.col(size).head(size) = from_position.transpose();
+  covariance_(size, size) = n.x() * from_position(0) + n.y() * from_position(1) + variance;
+  walls_.push_back({normal_rad, along_min, along_max});
+}
+
+void WallPositionFilter::turnWall(size_t wall, double normal_rad) {
+  WallLine& line = walls_[wall];
+  if (line.normal_rad == normal_rad) return;
+  const Eigen::Index w = kFirstWall + static_cast<Eigen::Index>(wall);
+  const double middle = 0.5 * (line.along_min + line.along_max);
+  const Eigen::Vector2d pivot = state_(w) * unit(line.normal_rad) + middle * along(line.normal_rad);
+  state_(w) = unit(normal_rad).dot(pivot);
+  const double new_middle = along(normal_rad).dot(pivot);
+  line.along_min += new_middle - middle;
+  line.along_max += new_middle - middle;
+  line.normal_rad = normal_rad;
+}
+
+}  // namespace stereonav

@@ -1,0 +1,100 @@
+#include "localization/wall_position_filter.h"
+
+#include <gtest/gtest.h>
+
+#include <mrpt/core/bits_math.h>
+
+#include <Eigen/Geometry>
+
+#include "hand_drawn_map.h"
+
+namespace stereonav {
+namespace {
+
+// A 6 m x 4 m room centred on the origin.
+const std::vector<testing::Segment> kRoom = {{-3, -2, 3, -2}, {3, -2, 3, 2}, {3, 2, -3, 2}, {-3, 2, -3, -2}};
+
+struct LoopErrors {
+  double filter_m = 0.0;    // the filter's largest position error over the last lap
+  double odometry_m = 0.0;  // dead reckoning's over the same lap
+};
+
+// Drives `laps` counterclockwise laps of the rectangle 1 m inside kRoom's walls, 0.1 m a frame,
+// turning at each corner in three frames. Odometry reads each distance `scale` times too long and
+// drifts 0.5 mm to the left every frame; the heading is the true one (the filter under test keeps
+// only the position).
+LoopErrors driveLoops(WallPositionFilter& filter, double scale, int laps) {
+  const double corners[4][2] = {{-2, -1}, {2, -1}, {2, 1}, {-2, 1}};
+  const WallSegmentOptions segments;
+  const std::vector<double> directions = {0.0};
+  Eigen::Vector2d truth(-2.0, -1.0), odometry = truth;
+  double heading = 0.0;
+  LoopErrors errors;
+  const auto frame = [&](const Eigen::Vector2d& displacement, double new_heading, int lap) {
+    const Eigen::Vector2d measured = scale * displacement + Eigen::Vector2d(0.0, displacement.norm() > 0 ? 0.0005 : 0.0);
+    truth += Eigen::Rotation2Dd(heading) * displacement;
+    odometry += Eigen::Rotation2Dd(heading) * measured;
+    const double previous = heading;
+    heading = new_heading;
+    const Eigen::Vector2d estimate = filter.update(
+        measured, previous, heading, 0.0, directions,
+        wallSegments(testing::scanOf(kRoom, mrpt::poses::CPose2D(truth.x(), truth.y(), heading)), segments));
+    if (lap == laps - 1) {
+      errors.filter_m = std::max(errors.filter_m, (estimate - truth).norm());
+      errors.odometry_m = std::max(errors.odometry_m, (odometry - truth).norm());
+    }
+  };
+  for (int lap = 0; lap < laps; ++lap) {
+    for (int side = 0; side < 4; ++side) {
+      const double* from = corners[side];
+      const double* to = corners[(side + 1) % 4];
+      const int steps = static_cast<int>(std::lround(std::hypot(to[0] - from[0], to[1] - from[1]) / 0.1));
+      for (int step = 0; step < steps; ++step) frame({0.1, 0.0}, heading, lap);
+      for (int turn = 1; turn <= 3; ++turn) frame({0.0, 0.0}, heading + M_PI / 6, lap);
+    }
+  }
+  return errors;
+}
+
+TEST(WallPositionFilterTest, KeepsThePositionWhileOdometryReadsLongAndDriftsAndLearnsTheScale) {
+  // Distances read 5% long: along a 4 m side dead reckoning ends 0.2 m off. The walls, seen
+  // again lap after lap, keep the position within centimetres, and the scale the filter learns
+  // is 1 / 1.05.
+  WallPositionFilter filter(WallPositionOptions{}, WallHeadingOptions{}, Eigen::Vector2d(-2.0, -1.0));
+  const LoopErrors errors = driveLoops(filter, 1.05, 4);
+  EXPECT_GT(errors.odometry_m, 0.15);
+  EXPECT_LT(errors.filter_m, 0.03);
+  EXPECT_NEAR(filter.distanceScale(), 1.0 / 1.05, 0.005);
+  // The room's four walls, each known once: a wall seen again is the same line.
+  EXPECT_EQ(filter.wallCount(), 4u);
+}
+
+TEST(WallPositionFilterTest, OffItIsOdometryDrivenAlongTheHeading) {
+  WallPositionOptions options;
+  options.enabled = false;
+  WallPositionFilter filter(options, WallHeadingOptions{}, Eigen::Vector2d(-2.0, -1.0));
+  const LoopErrors errors = driveLoops(filter, 1.05, 1);
+  EXPECT_NEAR(errors.filter_m, errors.odometry_m, 1e-9);
+  EXPECT_EQ(filter.wallCount(), 0u);
+}
+
+TEST(WallPositionFilterTest, TheTwoFacesOfAThinWallAreTwoLines) {
+  // A wall 5 cm thick along x = 0: seen from x = -1.5 its face x = 0 is 1.5 m ahead; seen from
+  // x = 1.55 (reached by an exact displacement) its face x = 0.05 is also 1.5 m ahead. Taken for
+  // one line, the second sighting would pull the position 5 cm; as two, it does not move it.
+  const std::vector<testing::Segment> wall = {{0.0, -3.0, 0.0, 3.0}, {0.05, -3.0, 0.05, 3.0}};
+  WallPositionFilter filter(WallPositionOptions{}, WallHeadingOptions{}, Eigen::Vector2d(-1.5, 0.0));
+  const std::vector<double> directions = {0.0};
+  const WallSegmentOptions segments;
+  filter.update({0.0, 0.0}, 0.0, 0.0, 0.0, directions,
+                wallSegments(testing::scanOf(wall, mrpt::poses::CPose2D(-1.5, 0.0, 0.0)), segments));
+  const Eigen::Vector2d position =
+      filter.update({3.05, 0.0}, 0.0, M_PI, 0.0, directions,
+                    wallSegments(testing::scanOf(wall, mrpt::poses::CPose2D(1.55, 0.0, M_PI)), segments));
+  EXPECT_EQ(filter.wallCount(), 2u);
+  EXPECT_NEAR(position.x(), 1.55, 1e-3);
+  EXPECT_NEAR(position.y(), 0.0, 1e-3);
+}
+
+}  // namespace
+}  // namespace stereonav
