@@ -38,11 +38,7 @@ Eigen::Vector2d WallPositionFilter::update(const Eigen::Vector2d& displacement, 
   predict(displacement, previous_heading, heading_variance);
   frame_corrections_ = 0;
   if (!options_.enabled) return position();
-  const Eigen::Vector2d robot = position();
-  const double c = std::cos(heading), s = std::sin(heading);
-  const auto toWorld = [&](const mrpt::math::TPoint2D& p) {
-    return Eigen::Vector2d(robot.x() + c * p.x - s * p.y, robot.y() + s * p.x + c * p.y);
-  };
+  const Eigen::Rotation2Dd turn(heading);
   for (const WallSegment& segment : segments) {
     const double seen = segment.normal_rad + heading;
     double snap = M_PI;
@@ -53,8 +49,11 @@ Eigen::Vector2d WallPositionFilter::update(const Eigen::Vector2d& displacement, 
     if (std::abs(snap) > max_direction_rad_) continue;
     const double normal = mrpt::math::wrapToPi(seen - snap);
     const double variance = mrpt::square(std::max(segment.offset_sigma_m, options_.min_offset_sigma_m));
+    // The stretch's ends along the line, from the position as corrected by the frame so far.
+    const Eigen::Vector2d robot = position();
     const Eigen::Vector2d t = along(normal);
-    const double a = t.dot(toWorld(segment.first)), b = t.dot(toWorld(segment.last));
+    const double a = t.dot(robot + turn * Eigen::Vector2d(segment.first.x, segment.first.y));
+    const double b = t.dot(robot + turn * Eigen::Vector2d(segment.last.x, segment.last.y));
     const size_t wall = associate(normal, segment.offset_m, variance, std::min(a, b), std::max(a, b));
     if (wall == walls_.size()) {
       addWall(normal, segment.offset_m, variance, std::min(a, b), std::max(a, b));
@@ -83,8 +82,9 @@ void WallPositionFilter::predict(const Eigen::Vector2d& displacement, double pre
   const double driven = moved.norm();
   if (driven <= 0.0) return;
   const Eigen::Vector2d across = Eigen::Vector2d(-moved.y(), moved.x()) / driven;
-  covariance_.topLeftCorner<2, 2>() += mrpt::square(options_.position_noise_per_m * driven) * Eigen::Matrix2d::Identity() +
-                                       driven * driven * heading_variance * across * across.transpose();
+  covariance_.topLeftCorner<2, 2>() +=
+      mrpt::square(options_.position_noise_per_m * driven) * Eigen::Matrix2d::Identity() +
+      driven * driven * heading_variance * across * across.transpose();
 }
 
 size_t WallPositionFilter::associate(double normal_rad, double offset_m, double variance, double along_min,
