@@ -25,6 +25,7 @@ WallHeadingFilter::WallHeadingFilter(const WallHeadingOptions& options, double s
 WallHeadingFilter::State WallHeadingFilter::startState(bool direction_confirmed) const {
   State state;
   state.heading = start_heading_;
+  state.prediction = {start_heading_, 0.0};
   state.covariance = Eigen::MatrixXd::Zero(2, 2);
   // Until a direction is known the scale's doubt would only widen the heading's, and keep the
   // votes for the first direction from agreeing. Once one is, the filter runs again from the
@@ -52,6 +53,7 @@ bool WallHeadingFilter::step(State& state, const Frame& frame, bool vote) {
   state.covariance(0, 0) += mrpt::square(mrpt::DEG2RAD(options_.heading_noise_deg_per_frame)) +
                             mrpt::square(options_.heading_noise_per_rad * frame.turn_rad) +
                             mrpt::square(mrpt::DEG2RAD(options_.heading_noise_deg_per_m) * frame.driven_m);
+  state.prediction = {state.heading, state.covariance(0, 0)};
   const double min_sigma = mrpt::DEG2RAD(options_.min_sigma_deg);
   const double max_correction = mrpt::DEG2RAD(options_.max_correction_deg);
   const double spread = mrpt::DEG2RAD(options_.new_direction_spread_deg);

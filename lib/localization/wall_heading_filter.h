@@ -11,6 +11,12 @@ namespace stereonav {
 // The difference a - b of two directions of pairs of perpendicular lines, in [-pi/4, pi/4).
 double perpendicularPairDifference(double a, double b);
 
+// A heading and its variance.
+struct HeadingEstimate {
+  double heading = 0.0;
+  double variance = 0.0;
+};
+
 // How WallHeadingFilter keeps the heading by the walls' directions (keys of [localization]).
 struct WallHeadingOptions {
   WallSegmentOptions segments;
@@ -62,7 +68,9 @@ class WallHeadingFilter {
   // it) and drove `driven_m` since the last one, and saw `segments` (robot frame).
   double update(double turn_rad, double driven_m, std::vector<WallSegment> segments);
 
-  double headingVariance() const { return state_.covariance(0, 0); }
+  HeadingEstimate estimate() const { return {state_.heading, state_.covariance(0, 0)}; }
+  // The last frame's heading before its segments corrected it: the one before, turned by odometry.
+  const HeadingEstimate& prediction() const { return state_.prediction; }
   double turnScale() const { return state_.turn_scale; }
   // Each known pair of wall directions by its member in [-pi/4, pi/4) (the other is 90 degrees on).
   const std::vector<double>& directions() const { return state_.directions; }
@@ -79,6 +87,7 @@ class WallHeadingFilter {
   };
   struct State {
     double heading = 0.0;
+    HeadingEstimate prediction;
     double turn_scale = 1.0;
     std::vector<double> directions;
     Eigen::MatrixXd covariance;  // of (heading, turn scale, directions...)

@@ -12,7 +12,8 @@ namespace stereonav {
 namespace {
 
 constexpr Eigen::Index kScale = 2;
-constexpr Eigen::Index kFirstWall = 3;
+constexpr Eigen::Index kHeadingError = 3;
+constexpr Eigen::Index kFirstWall = 4;
 
 Eigen::Vector2d unit(double angle) { return {std::cos(angle), std::sin(angle)}; }
 
@@ -26,21 +27,23 @@ WallPositionFilter::WallPositionFilter(const WallPositionOptions& options,
     : options_(options),
       gate_sigmas_(heading_options.gate_sigmas),
       max_direction_rad_(mrpt::DEG2RAD(heading_options.max_correction_deg)),
-      state_(Eigen::Vector3d(start.x(), start.y(), 1.0)),
-      covariance_(Eigen::Matrix3d::Zero()) {
+      state_(Eigen::Vector4d(start.x(), start.y(), 1.0, 0.0)),
+      covariance_(Eigen::Matrix4d::Zero()) {
   covariance_(kScale, kScale) = mrpt::square(options.distance_scale_sigma);
 }
 
 Eigen::Vector2d WallPositionFilter::update(const Eigen::Vector2d& displacement, double previous_heading,
-                                           double heading, double heading_variance,
+                                           const HeadingEstimate& predicted, const HeadingEstimate& heading,
                                            const std::vector<double>& directions,
                                            const std::vector<WallSegment>& segments) {
-  predict(displacement, previous_heading, heading_variance);
+  predict(displacement, previous_heading);
+  followHeading(0.0, predicted.variance);
+  followHeading(mrpt::math::wrapToPi(heading.heading - predicted.heading), heading.variance);
   frame_corrections_ = 0;
   if (!options_.enabled) return position();
-  const Eigen::Rotation2Dd turn(heading);
+  const Eigen::Rotation2Dd turn(heading.heading);
   for (const WallSegment& segment : segments) {
-    const double seen = segment.normal_rad + heading;
+    const double seen = segment.normal_rad + heading.heading;
     double snap = M_PI;
     for (const double direction : directions) {
       const double difference = perpendicularPairDifference(seen, direction);
@@ -60,7 +63,7 @@ Eigen::Vector2d WallPositionFilter::update(const Eigen::Vector2d& displacement, 
       continue;
     }
     turnWall(wall, normal);
-    correct(wall, segment.offset_m, variance);
+    correct(innovation(wall, segment.offset_m, variance));
     // The stretch as seen from the corrected position.
     const Eigen::Vector2d shift = position() - robot;
     walls_[wall].along_min = std::min(walls_[wall].along_min, std::min(a, b) + t.dot(shift));
@@ -70,26 +73,52 @@ Eigen::Vector2d WallPositionFilter::update(const Eigen::Vector2d& displacement, 
   return position();
 }
 
-void WallPositionFilter::predict(const Eigen::Vector2d& displacement, double previous_heading,
-                                 double heading_variance) {
+void WallPositionFilter::predict(const Eigen::Vector2d& displacement, double previous_heading) {
+  // The heading filter keeps the heading: the error it leaves is new every frame, measured from it.
+  state_(kHeadingError) = 0.0;
   const Eigen::Vector2d moved = Eigen::Rotation2Dd(previous_heading) * displacement;
   state_.head<2>() += state_(kScale) * moved;
-  // F = I but for d position / d scale = moved; F P F^T by rows, then by columns.
-  covariance_.row(0) += moved.x() * covariance_.row(kScale);
-  covariance_.row(1) += moved.y() * covariance_.row(kScale);
-  covariance_.col(0) += moved.x() * covariance_.col(kScale);
-  covariance_.col(1) += moved.y() * covariance_.col(kScale);
-  const double driven = moved.norm();
-  if (driven <= 0.0) return;
-  const Eigen::Vector2d across = Eigen::Vector2d(-moved.y(), moved.x()) / driven;
+  // F = I but for d position / d scale = moved and d position / d heading = moved turned a quarter
+  // turn, times the scale. F P F^T by rows, then by columns.
+  const Eigen::Vector2d sideways = state_(kScale) * Eigen::Vector2d(-moved.y(), moved.x());
+  for (const Eigen::Index axis : {0, 1}) {
+    covariance_.row(axis) += moved(axis) * covariance_.row(kScale) + sideways(axis) * covariance_.row(kHeadingError);
+  }
+  for (const Eigen::Index axis : {0, 1}) {
+    covariance_.col(axis) += moved(axis) * covariance_.col(kScale) + sideways(axis) * covariance_.col(kHeadingError);
+  }
   covariance_.topLeftCorner<2, 2>() +=
-      mrpt::square(options_.position_noise_per_m * driven) * Eigen::Matrix2d::Identity() +
-      driven * driven * heading_variance * across * across.transpose();
+      mrpt::square(options_.position_noise_per_m * moved.norm()) * Eigen::Matrix2d::Identity();
+}
+
+void WallPositionFilter::followHeading(double shift, double variance) {
+  const double prior = covariance_(kHeadingError, kHeadingError);
+  if (variance >= prior) {  // odometry's turn: the error grew, independently of the rest
+    covariance_(kHeadingError, kHeadingError) = variance;
+    return;
+  }
+  // The walls' directions measured the heading's error: a Kalman update by a measurement of it
+  // alone whose noise takes its variance from prior to `variance`, and its mean by `shift`. What
+  // was driven on that error moves with it.
+  const Eigen::VectorXd column = covariance_.col(kHeadingError);
+  state_ += column * (shift / prior);
+  covariance_ -= column * column.transpose() * ((prior - variance) / (prior * prior));
+  state_(kHeadingError) = 0.0;
+}
+
+WallPositionFilter::Innovation WallPositionFilter::innovation(size_t wall, double offset_m, double variance) const {
+  const Eigen::Vector2d n = unit(walls_[wall].normal_rad);
+  const Eigen::Index w = kFirstWall + static_cast<Eigen::Index>(wall);
+  // The offset predicted from the state is wall offset - n . position: H = [-n 0 0 .. 1 ..].
+  Innovation result;
+  result.value = offset_m - (state_(w) - n.dot(state_.head<2>()));
+  result.h_covariance = covariance_.row(w) - n.x() * covariance_.row(0) - n.y() * covariance_.row(1);
+  result.variance = result.h_covariance(w) - n.x() * result.h_covariance(0) - n.y() * result.h_covariance(1) + variance;
+  return result;
 }
 
 size_t WallPositionFilter::associate(double normal_rad, double offset_m, double variance, double along_min,
                                      double along_max) const {
-  const Eigen::Vector2d n = unit(normal_rad);
   size_t best = walls_.size();
   double best_distance = mrpt::square(gate_sigmas_);
   for (size_t i = 0; i < walls_.size(); ++i) {
@@ -98,11 +127,8 @@ size_t WallPositionFilter::associate(double normal_rad, double offset_m, double 
     if (along_min - wall.along_max > options_.max_join_gap_m || wall.along_min - along_max > options_.max_join_gap_m) {
       continue;
     }
-    const Eigen::Index w = kFirstWall + static_cast<Eigen::Index>(i);
-    const double innovation = offset_m - (state_(w) - n.dot(state_.head<2>()));
-    const double innovation_variance = n.dot(covariance_.topLeftCorner<2, 2>() * n) + covariance_(w, w) -
-                                       2.0 * n.dot(covariance_.block<2, 1>(0, w)) + variance;
-    const double distance = innovation * innovation / innovation_variance;
+    const Innovation candidate = innovation(i, offset_m, variance);
+    const double distance = candidate.value * candidate.value / candidate.variance;
     if (distance < best_distance) {
       best_distance = distance;
       best = i;
@@ -111,17 +137,10 @@ size_t WallPositionFilter::associate(double normal_rad, double offset_m, double 
   return best;
 }
 
-void WallPositionFilter::correct(size_t wall, double offset_m, double variance) {
-  const Eigen::Vector2d n = unit(walls_[wall].normal_rad);
-  const Eigen::Index w = kFirstWall + static_cast<Eigen::Index>(wall);
-  // The offset predicted from the state is wall offset - n . position: H = [-n 0 .. 1 ..].
-  const double innovation = offset_m - (state_(w) - n.dot(state_.head<2>()));
-  const Eigen::RowVectorXd h_covariance =
-      covariance_.row(w) - n.x() * covariance_.row(0) - n.y() * covariance_.row(1);
-  const double innovation_variance = h_covariance(w) - n.x() * h_covariance(0) - n.y() * h_covariance(1) + variance;
-  const Eigen::VectorXd gain = h_covariance.transpose() / innovation_variance;
-  state_ += gain * innovation;
-  covariance_ -= gain * h_covariance;
+void WallPositionFilter::correct(const Innovation& innovation) {
+  const Eigen::VectorXd gain = innovation.h_covariance.transpose() / innovation.variance;
+  state_ += gain * innovation.value;
+  covariance_ -= gain * innovation.h_covariance;
 }
 
 void WallPositionFilter::addWall(double normal_rad, double offset_m, double variance, double along_min,

@@ -13,12 +13,11 @@ namespace stereonav {
 struct WallPositionOptions {
   // Off: the position is odometry's, driven along the filtered heading.
   bool enabled = true;
-  // The position noise per metre driven (one sigma, along and across): odometry's own (2% in
-  // the explore config) plus what a heading error does while driving, which grows with the
-  // distance driven since the heading was last corrected and so is not the white noise the
-  // filter models. With 0.02 the position errors on four recorded office runs were twice the
-  // filter's sigma (NEES 4-6 per axis pair, where 1 is consistent); with 0.06, 1.2-2.2.
-  double position_noise_per_m = 0.06;
+  // The position noise per metre driven (one sigma, along and across) that odometry adds beyond
+  // what its distance scale and the heading's error explain (both are in the state). With 0.03
+  // the position errors on four recorded office runs were 1.0-3.7 times the filter's variance
+  // (NEES per axis pair, where 1 is consistent), and the errors least.
+  double position_noise_per_m = 0.03;
   // How far odometry's distances may be off in scale (a wheel radius off its nominal length): one
   // sigma of the prior on the scale that the filter learns.
   double distance_scale_sigma = 0.05;
@@ -41,18 +40,23 @@ struct WallPositionOptions {
 // the filter is linear but for the scale. A wall line is known by the side it was seen from
 // (the two faces of a thin wall are two lines), its offset (within the gate of gate_sigmas of
 // WallHeadingOptions) and the stretch of it seen so far.
+//
+// The state also holds the heading's error: driving on a heading that is off moves the position
+// sideways by the distance times the error, the same error frame after frame until the walls'
+// directions correct the heading. So a heading correction tells the position too: driven 5 m on
+// a heading 2 degrees off, the robot is 17 cm to the side of where it thought.
 class WallPositionFilter {
  public:
   WallPositionFilter(const WallPositionOptions& options, const WallHeadingOptions& heading_options,
                      const Eigen::Vector2d& start);
 
   // The position after a frame: odometry measured `displacement` (in the frame of the previous
-  // pose, which headed `previous_heading`); the robot now heads `heading` (with the filter's
-  // `heading_variance`) and sees `segments` (robot frame). `directions`: the wall directions known,
-  // WallHeadingFilter::directions().
-  Eigen::Vector2d update(const Eigen::Vector2d& displacement, double previous_heading, double heading,
-                         double heading_variance, const std::vector<double>& directions,
-                         const std::vector<WallSegment>& segments);
+  // pose, which headed `previous_heading`); WallHeadingFilter predicted the heading `predicted`
+  // (its prediction()) and corrected it to `heading` (its estimate()); the robot sees `segments`
+  // (robot frame). `directions`: the wall directions known, WallHeadingFilter::directions().
+  Eigen::Vector2d update(const Eigen::Vector2d& displacement, double previous_heading,
+                         const HeadingEstimate& predicted, const HeadingEstimate& heading,
+                         const std::vector<double>& directions, const std::vector<WallSegment>& segments);
 
   Eigen::Vector2d position() const { return state_.head<2>(); }
   Eigen::Matrix2d positionCovariance() const { return covariance_.topLeftCorner<2, 2>(); }
@@ -69,11 +73,21 @@ class WallPositionFilter {
     double along_max = 0.0;
   };
 
-  void predict(const Eigen::Vector2d& displacement, double previous_heading, double heading_variance);
+  // A segment's offset against a wall line's, as the filter predicts it.
+  struct Innovation {
+    double value = 0.0;             // measured minus predicted
+    Eigen::RowVectorXd h_covariance;  // the measurement row times the covariance
+    double variance = 0.0;
+  };
+
+  void predict(const Eigen::Vector2d& displacement, double previous_heading);
+  // The heading filter moved the heading by `shift` and left its variance at `variance`.
+  void followHeading(double shift, double variance);
+  Innovation innovation(size_t wall, double offset_m, double variance) const;
   // The wall the segment (world normal, offset, stretch along) continues, or walls_.size().
   size_t associate(double normal_rad, double offset_m, double variance, double along_min,
                    double along_max) const;
-  void correct(size_t wall, double offset_m, double variance);
+  void correct(const Innovation& innovation);
   void addWall(double normal_rad, double offset_m, double variance, double along_min, double along_max);
   // Turns a wall line about the middle of its seen stretch to the refined direction `normal_rad`.
   void turnWall(size_t wall, double normal_rad);
@@ -81,7 +95,8 @@ class WallPositionFilter {
   WallPositionOptions options_;
   double gate_sigmas_;
   double max_direction_rad_;
-  Eigen::VectorXd state_;       // position x, y; distance scale; each wall line's offset
+  // Position x, y; distance scale; the heading's error; each wall line's offset.
+  Eigen::VectorXd state_;
   Eigen::MatrixXd covariance_;
   std::vector<WallLine> walls_;
   int frame_corrections_ = 0;

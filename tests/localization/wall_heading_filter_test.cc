@@ -99,7 +99,7 @@ TEST(WallHeadingFilterTest, AnUnsureHeadingIsCorrectedOnlyBySegmentsThatAgree) {
   for (int frame = 0; frame < 10; ++frame) filter.update(0.0, 0.0, {segmentAlong(0.0)});
   ASSERT_EQ(filter.directions().size(), 1u);
   for (int frame = 0; frame < 6; ++frame) filter.update(M_PI / 6, 0.0, {});
-  ASSERT_GT(std::sqrt(filter.headingVariance()), mrpt::DEG2RAD(WallHeadingOptions{}.new_direction_spread_deg));
+  ASSERT_GT(std::sqrt(filter.estimate().variance), mrpt::DEG2RAD(WallHeadingOptions{}.new_direction_spread_deg));
   EXPECT_NEAR(filter.update(0.0, 0.0, {segmentAlong(6.0)}), M_PI, 1e-9);
   EXPECT_NEAR(filter.update(0.0, 0.0, {segmentAlong(1.0)}), M_PI, 1e-9);
   const double heading = filter.update(0.0, 0.0, {segmentAlong(1.0), segmentAlong(1.0)});

@@ -37,7 +37,7 @@ LoopErrors driveLoops(WallPositionFilter& filter, double scale, int laps) {
     const double previous = heading;
     heading = new_heading;
     const Eigen::Vector2d estimate = filter.update(
-        measured, previous, heading, 0.0, directions,
+        measured, previous, {heading, 0.0}, {heading, 0.0}, directions,
         wallSegments(testing::scanOf(kRoom, mrpt::poses::CPose2D(truth.x(), truth.y(), heading)), segments));
     if (lap == laps - 1) {
       errors.filter_m = std::max(errors.filter_m, (estimate - truth).norm());
@@ -86,14 +86,37 @@ TEST(WallPositionFilterTest, TheTwoFacesOfAThinWallAreTwoLines) {
   WallPositionFilter filter(WallPositionOptions{}, WallHeadingOptions{}, Eigen::Vector2d(-1.5, 0.0));
   const std::vector<double> directions = {0.0};
   const WallSegmentOptions segments;
-  filter.update({0.0, 0.0}, 0.0, 0.0, 0.0, directions,
+  filter.update({0.0, 0.0}, 0.0, {0.0, 0.0}, {0.0, 0.0}, directions,
                 wallSegments(testing::scanOf(wall, mrpt::poses::CPose2D(-1.5, 0.0, 0.0)), segments));
   const Eigen::Vector2d position =
-      filter.update({3.05, 0.0}, 0.0, M_PI, 0.0, directions,
+      filter.update({3.05, 0.0}, 0.0, {M_PI, 0.0}, {M_PI, 0.0}, directions,
                     wallSegments(testing::scanOf(wall, mrpt::poses::CPose2D(1.55, 0.0, M_PI)), segments));
   EXPECT_EQ(filter.wallCount(), 2u);
   EXPECT_NEAR(position.x(), 1.55, 1e-3);
   EXPECT_NEAR(position.y(), 0.0, 1e-3);
+}
+
+TEST(WallPositionFilterTest, AHeadingFoundOffMovesWhatWasDrivenOnIt) {
+  // The robot drives 5 m, 0.1 m a frame, believing it heads along x with a sigma of 2 degrees and
+  // seeing no wall. It truly heads 2 degrees to the right: it ends 5 sin(2 deg) = 0.1745 m to the
+  // right of its belief. When the walls' directions then tell the heading (-2 degrees, sigma 0.1),
+  // the position moves by that much: the error that drove it off is the one just measured.
+  WallPositionOptions options;
+  options.position_noise_per_m = 0.0;
+  WallPositionFilter filter(options, WallHeadingOptions{}, Eigen::Vector2d::Zero());
+  const HeadingEstimate unsure{0.0, mrpt::square(mrpt::DEG2RAD(2.0))};
+  Eigen::Vector2d position = filter.update({0.0, 0.0}, 0.0, unsure, unsure, {}, {});
+  for (int frame = 0; frame < 50; ++frame) position = filter.update({0.1, 0.0}, 0.0, unsure, unsure, {}, {});
+  EXPECT_NEAR(position.x(), 5.0, 1e-9);
+  EXPECT_NEAR(position.y(), 0.0, 1e-9);
+  // The sideways sigma is the distance times the heading's sigma, not the square root of the
+  // frames' count times one frame's share.
+  EXPECT_NEAR(std::sqrt(filter.positionCovariance()(1, 1)), 5.0 * mrpt::DEG2RAD(2.0), 1e-6);
+  const HeadingEstimate corrected{mrpt::DEG2RAD(-2.0), mrpt::square(mrpt::DEG2RAD(0.1))};
+  position = filter.update({0.0, 0.0}, 0.0, unsure, corrected, {}, {});
+  EXPECT_NEAR(position.x(), 5.0, 1e-9);
+  EXPECT_NEAR(position.y(), -5.0 * std::sin(mrpt::DEG2RAD(2.0)), 0.002);
+  EXPECT_NEAR(std::sqrt(filter.positionCovariance()(1, 1)), 5.0 * mrpt::DEG2RAD(0.1), 1e-6);
 }
 
 }  // namespace
