@@ -101,18 +101,16 @@ bool WallHeadingFilter::step(State& state, const Frame& frame, bool vote) {
     const double innovation_variance = state.covariance(0, 0) + state.covariance(d, d) -
                                        2.0 * state.covariance(0, d) + sigma * sigma;
     if (innovation * innovation > mrpt::square(options_.gate_sigmas) * innovation_variance) continue;
-    if (unsure) {
+    if (unsure || std::abs(innovation) > spread) {
       state.held.push_back({nearest, innovation, sigma, 0.0});
     } else {
       correct(state, nearest, innovation, sigma);
     }
   }
-  if (!unsure) {
-    state.held.clear();
-    return confirmed;
-  }
-  // Unsure, the gate is wide and one askew segment (a chair, a person) could take the heading
-  // anywhere within it: correct only once enough segments, in this frame or the last few, agree.
+  if (state.held.empty()) return confirmed;
+  // One askew segment (a chair, a desk, a person) within the gate could turn the heading by as
+  // much as the gate is wide: a segment that would turn it by more than `spread`, or any while
+  // the heading is unsure, corrects it only once enough, in this frame or the last few, agree.
   std::vector<size_t> agreeing;
   for (const HeldSegment& held : state.held) {
     std::vector<size_t> members;
@@ -122,16 +120,16 @@ bool WallHeadingFilter::step(State& state, const Frame& frame, bool vote) {
     if (members.size() > agreeing.size()) agreeing = std::move(members);
   }
   if (static_cast<int>(agreeing.size()) < options_.agreeing_segments) return confirmed;
+  const std::vector<HeldSegment> held = std::move(state.held);
+  state.held.clear();
   // Each correction moves the heading and the directions; the later ones are measured from there.
   const double heading = state.heading;
   const std::vector<double> directions = state.directions;
   for (const size_t i : agreeing) {
-    const HeldSegment& held = state.held[i];
-    const double innovation = held.innovation + (state.heading - heading) -
-                              perpendicularPairDifference(state.directions[held.direction], directions[held.direction]);
-    correct(state, held.direction, innovation, held.sigma);
+    const double innovation = held[i].innovation + (state.heading - heading) -
+                              perpendicularPairDifference(state.directions[held[i].direction], directions[held[i].direction]);
+    correct(state, held[i].direction, innovation, held[i].sigma);
   }
-  state.held.clear();
   return confirmed;
 }
 
@@ -149,6 +147,10 @@ void WallHeadingFilter::correct(State& state, size_t direction, double innovatio
   }
   const Eigen::RowVectorXd h_covariance = state.covariance.row(d) - state.covariance.row(0);
   state.covariance -= gain * h_covariance;
+  // Held segments were measured against the heading and directions before this correction.
+  for (HeldSegment& held : state.held) {
+    held.innovation += gain(0) * innovation - gain(2 + static_cast<Eigen::Index>(held.direction)) * innovation;
+  }
   ++state.frame_corrections;
 }
 

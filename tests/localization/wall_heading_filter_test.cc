@@ -107,6 +107,24 @@ TEST(WallHeadingFilterTest, AnUnsureHeadingIsCorrectedOnlyBySegmentsThatAgree) {
   EXPECT_GT(heading, M_PI - mrpt::DEG2RAD(1.0));
 }
 
+TEST(WallHeadingFilterTest, ALargeCorrectionWaitsForSegmentsThatAgreeEvenWhenTheHeadingIsSure) {
+  // The direction 0 known, then a turn of 30 degrees with no wall in view: the heading is sure
+  // to about 1.5 degrees (the turn scale's doubt), so the gate is about 5 degrees wide. A wall
+  // at 0 seen at -27 degrees says the heading is 27, not 30. One such segment (it may be a desk
+  // set askew) waits; three, over two frames, correct the heading by most of the 3 degrees.
+  WallHeadingFilter filter(WallHeadingOptions{}, 0.0);
+  for (int frame = 0; frame < 10; ++frame) filter.update(0.0, 0.0, {segmentAlong(0.0)});
+  ASSERT_EQ(filter.directions().size(), 1u);
+  const double turned = filter.update(M_PI / 6, 0.0, {});
+  const double sigma = std::sqrt(filter.estimate().variance);
+  ASSERT_LT(sigma, mrpt::DEG2RAD(WallHeadingOptions{}.new_direction_spread_deg));
+  ASSERT_GT(WallHeadingOptions{}.gate_sigmas * sigma, mrpt::DEG2RAD(3.5));
+  EXPECT_DOUBLE_EQ(filter.update(0.0, 0.0, {segmentAlong(-27.0)}), turned);
+  const double heading = filter.update(0.0, 0.0, {segmentAlong(-27.0), segmentAlong(-27.0)});
+  EXPECT_LT(heading, turned - mrpt::DEG2RAD(2.5));
+  EXPECT_GT(heading, turned - mrpt::DEG2RAD(3.0));
+}
+
 TEST(WallHeadingFilterTest, WithoutWallsTheHeadingIsOdometrys) {
   WallHeadingFilter filter(WallHeadingOptions{}, 0.5);
   double expected = 0.5;
