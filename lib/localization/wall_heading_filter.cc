@@ -97,10 +97,9 @@ bool WallHeadingFilter::step(State& state, const Frame& frame, bool vote) {
       }
       continue;
     }
-    const Eigen::Index d = 2 + static_cast<Eigen::Index>(nearest);
-    const double innovation_variance = state.covariance(0, 0) + state.covariance(d, d) -
-                                       2.0 * state.covariance(0, d) + sigma * sigma;
-    if (innovation * innovation > mrpt::square(options_.gate_sigmas) * innovation_variance) continue;
+    if (innovation * innovation > mrpt::square(options_.gate_sigmas) * innovationVariance(state, nearest, sigma)) {
+      continue;
+    }
     if (unsure || std::abs(innovation) > spread) {
       state.held.push_back({nearest, innovation, sigma, 0.0});
     } else {
@@ -133,13 +132,17 @@ bool WallHeadingFilter::step(State& state, const Frame& frame, bool vote) {
   return confirmed;
 }
 
+double WallHeadingFilter::innovationVariance(const State& state, size_t direction, double sigma) {
+  // The segment's direction predicted from the state is direction - heading: H = [-1 0 .. 1 ..].
+  const Eigen::Index d = 2 + static_cast<Eigen::Index>(direction);
+  return state.covariance(0, 0) + state.covariance(d, d) - 2.0 * state.covariance(0, d) + sigma * sigma;
+}
+
 void WallHeadingFilter::correct(State& state, size_t direction, double innovation, double sigma) const {
   const Eigen::Index d = 2 + static_cast<Eigen::Index>(direction);
-  const double innovation_variance =
-      state.covariance(0, 0) + state.covariance(d, d) - 2.0 * state.covariance(0, d) + sigma * sigma;
-  // The segment's direction predicted from the state is direction - heading: H = [-1 0 .. 1 ..],
-  // and the innovation (world - direction) is measured minus predicted.
-  const Eigen::VectorXd gain = (state.covariance.col(d) - state.covariance.col(0)) / innovation_variance;
+  // The innovation (world - direction) is measured minus predicted.
+  const Eigen::VectorXd gain =
+      (state.covariance.col(d) - state.covariance.col(0)) / innovationVariance(state, direction, sigma);
   state.heading += gain(0) * innovation;
   state.turn_scale += gain(1) * innovation;
   for (size_t i = 0; i < state.directions.size(); ++i) {

@@ -111,6 +111,8 @@ class WallHeadingFilter {
   // Runs `frame` through `state`; segments far from every direction of `state` vote for new
   // directions when `vote` is set. Returns true when a vote confirms one.
   bool step(State& state, const Frame& frame, bool vote);
+  // The variance of the innovation of a segment along `direction` with that sigma.
+  static double innovationVariance(const State& state, size_t direction, double sigma);
   // The Kalman update of `state` by a segment along `direction` with that innovation.
   void correct(State& state, size_t direction, double innovation, double sigma) const;
   bool voteFor(double world_direction, double sigma);
