@@ -119,16 +119,11 @@ bool WallHeadingFilter::step(State& state, const Frame& frame, bool vote) {
     if (members.size() > agreeing.size()) agreeing = std::move(members);
   }
   if (static_cast<int>(agreeing.size()) < options_.agreeing_segments) return confirmed;
-  const std::vector<HeldSegment> held = std::move(state.held);
-  state.held.clear();
-  // Each correction moves the heading and the directions; the later ones are measured from there.
-  const double heading = state.heading;
-  const std::vector<double> directions = state.directions;
+  // Each correction moves the heading and the directions, and with them the held innovations.
   for (const size_t i : agreeing) {
-    const double innovation = held[i].innovation + (state.heading - heading) -
-                              perpendicularPairDifference(state.directions[held[i].direction], directions[held[i].direction]);
-    correct(state, held[i].direction, innovation, held[i].sigma);
+    correct(state, state.held[i].direction, state.held[i].innovation, state.held[i].sigma);
   }
+  state.held.clear();
   return confirmed;
 }
 
