@@ -154,11 +154,7 @@ void WallHeadingFilter::correct(State& state, size_t direction, double innovatio
 
 bool WallHeadingFilter::voteFor(double world_direction, double sigma) {
   const double spread = mrpt::DEG2RAD(options_.new_direction_spread_deg);
-  // Once a direction is known, a heading more unsure than the spread could show a wall along it
-  // as one along a new direction. The first direction has nothing to be confused with: it is
-  // taken up whatever the heading's doubt, which would otherwise only grow (a hall with no wall
-  // within reach for the first minutes) until no direction could ever be.
-  if (!confirmed_.empty() && sigma > spread) return false;
+  if (sigma > spread) return false;  // the heading is too unsure to tell where the wall runs
   const double weight = 1.0 / (sigma * sigma);
   for (Candidate& candidate : candidates_) {
     const double difference = perpendicularPairDifference(world_direction, candidate.direction);

@@ -90,22 +90,6 @@ TEST(WallHeadingFilterTest, ADirectionCountsOnlyOnceEnoughSegmentsAgreeOnIt) {
   EXPECT_GT(heading, mrpt::DEG2RAD(89.0));
 }
 
-TEST(WallHeadingFilterTest, TheFirstDirectionIsTakenUpHoweverUnsureTheHeadingHasBecome) {
-  // A hall: the robot turns for 100 frames with no wall in reach, and the heading's doubt grows
-  // beyond the spread within which segments must agree. The first wall it then sees, in eight
-  // frames, is still taken up: there is no known direction to mistake it for.
-  WallHeadingFilter filter(WallHeadingOptions{}, 0.0);
-  double heading = 0.0;
-  for (int frame = 0; frame < 100; ++frame) heading = filter.update(M_PI / 6, 0.0, {});
-  ASSERT_GT(std::sqrt(filter.estimate().variance), mrpt::DEG2RAD(WallHeadingOptions{}.new_direction_spread_deg));
-  for (int frame = 0; frame < WallHeadingOptions{}.new_direction_segments; ++frame) {
-    EXPECT_TRUE(filter.directions().empty());
-    filter.update(0.0, 0.0, {segmentAlong(10.0)});
-  }
-  ASSERT_EQ(filter.directions().size(), 1u);
-  EXPECT_NEAR(perpendicularPairDifference(filter.directions()[0], heading + mrpt::DEG2RAD(10.0)), 0.0, 1e-6);
-}
-
 TEST(WallHeadingFilterTest, AnUnsureHeadingIsCorrectedOnlyBySegmentsThatAgree) {
   // The direction 0 known, then a half turn with no wall in view leaves the heading unsure (a few
   // degrees). One segment 6 degrees off (a desk set askew) is within the wide gate but alone:
