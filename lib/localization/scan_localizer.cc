@@ -40,11 +40,11 @@ const ScanMatch& ScanLocalizer::update(const mrpt::poses::CPose2D& odometry,
   // The motion as matched where the match pinned it down, as odometry measured it otherwise.
   const mrpt::poses::CPose2D moved = last_match_.pose - previous;
   wall_heading_->update(moved.phi(), motion.norm(), segments);
+  const HeadingEstimate heading = wall_heading_->estimate();
   const Eigen::Vector2d position =
       wall_position_->update(Eigen::Vector2d(moved.x(), moved.y()), previous.phi(), wall_heading_->prediction(),
-                             wall_heading_->estimate(), wall_heading_->directions(), segments);
-  last_match_.pose =
-      mrpt::poses::CPose2D(position.x(), position.y(), mrpt::math::wrapToPi(wall_heading_->estimate().heading));
+                             heading, wall_heading_->directions(), segments);
+  last_match_.pose = mrpt::poses::CPose2D(position.x(), position.y(), mrpt::math::wrapToPi(heading.heading));
   if (wall_heading_->lastFrameCorrections() > 0 || wall_position_->lastFrameCorrections() > 0) {
     last_match_.corrected = true;
   }
