@@ -54,6 +54,9 @@ ColumnProjector::ColumnProjector(const CameraRig& rig, const ProjectionOptions& 
       floor_end_min_disparity_(options.floor_end_max_depth_m > 0.0 && mount_z_ > 0.0
                                    ? rig.disparityForDepth(options.floor_end_max_depth_m)
                                    : 0.0),
+      clear_end_min_disparity_(options.floor_end_clear_max_depth_m > 0.0 && mount_z_ > 0.0
+                                   ? rig.disparityForDepth(options.floor_end_clear_max_depth_m)
+                                   : 0.0),
       surface_band_px_(options.surface_band_px),
       min_reading_disparity_(options.max_depth_m > 0.0 ? rig.disparityForDepth(options.max_depth_m)
                                                        : 0.0) {
@@ -138,9 +141,24 @@ DisparityScan ColumnProjector::project(const cv::Mat1f& disparity) const {
       float foot = 0.0f;
       int foot_row = -1;
       // A surface seen in the column at the foot's depth or nearer is the reading already.
-      if (unmatchedFoot(disparity, x, foot, foot_row) && !(best_row[x] >= 0 && best[x] >= foot - 0.5f)) {
+      if (unmatchedFoot(disparity, x, floor_end_min_disparity_, foot, foot_row) &&
+          !(best_row[x] >= 0 && best[x] >= foot - 0.5f)) {
         best[x] = foot;
         best_row[x] = foot_row;
+      }
+    }
+  }
+  if (clear_end_min_disparity_ > 0.0) {
+    scan.column_clear_end.assign(width, kInvalidDisparity);
+    scan.column_clear_end_row.assign(width, -1);
+    for (int x = 0; x < width; ++x) {
+      float foot = 0.0f;
+      int foot_row = -1;
+      // Only a reading beyond the foot has CLEAR to cut; a column without one has none.
+      if (best_row[x] >= 0 && unmatchedFoot(disparity, x, clear_end_min_disparity_, foot, foot_row) &&
+          best[x] < foot - 0.5f) {
+        scan.column_clear_end[x] = foot;
+        scan.column_clear_end_row[x] = foot_row;
       }
     }
   }
@@ -167,7 +185,8 @@ bool ColumnProjector::blind(const cv::Mat1f& disparity, int x) const {
   return rows > 0 && unmatched >= kUnmatchedShare * rows;
 }
 
-bool ColumnProjector::unmatchedFoot(const cv::Mat1f& disparity, int x, float& foot_disparity, int& foot_row) const {
+bool ColumnProjector::unmatchedFoot(const cv::Mat1f& disparity, int x, double min_disparity,
+                                    float& foot_disparity, int& foot_row) const {
   // Up from the bottom row: the floor's last matched pixel before anything off the floor (or the
   // horizon) comes into sight. Unmatched pixels on the way are floor without texture.
   int floor_end = -1;
@@ -182,7 +201,7 @@ bool ColumnProjector::unmatchedFoot(const cv::Mat1f& disparity, int x, float& fo
   if (floor_end < 0) return false;
   // Its disparity on the floor plane (mount_z + k / d = 0): the row's geometry, not the noise.
   const float foot = static_cast<float>(-height_factor_(floor_end, x) / mount_z_);
-  if (foot < floor_end_min_disparity_) return false;
+  if (foot < min_disparity) return false;
   // The rows above it that would show a surface standing there, from the floor up to
   // floor_clearance_m, must mostly match nothing: a gap in the floor's texture has the floor
   // again (or a farther surface) right above it.

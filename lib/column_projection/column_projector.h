@@ -31,7 +31,9 @@ class ColumnProjector {
  private:
   // The floor's end in column x, matched from the bottom up, if it is the foot of a surface that
   // matched nothing: its disparity on the floor plane and its row; false otherwise.
-  bool unmatchedFoot(const cv::Mat1f& disparity, int x, float& foot_disparity, int& foot_row) const;
+  // Feet at a smaller disparity than min_disparity are not looked for.
+  bool unmatchedFoot(const cv::Mat1f& disparity, int x, double min_disparity, float& foot_disparity,
+                     int& foot_row) const;
   // Whether column x matches nothing in most of its near-floor rows.
   bool blind(const cv::Mat1f& disparity, int x) const;
 
@@ -46,6 +48,8 @@ class ColumnProjector {
   double floor_clearance_;
   // Floor ends at a smaller disparity (deeper than floor_end_max_depth_m) are no feet; 0 = off.
   double floor_end_min_disparity_;
+  // Likewise for feet that end a farther reading's CLEAR; 0 = off.
+  double clear_end_min_disparity_;
   // Per column, the top row of the nearest floor it sees (rows near_floor_top_row_[x] .. the
   // bottom); empty when near_floor_m is off.
   std::vector<int> near_floor_top_row_;

@@ -22,10 +22,21 @@ struct DisparityScan {
   // (ProjectionOptions::near_floor_m): whatever stands in front of the robot there, nearer than
   // that floor, the matcher could not see. Empty when not checked.
   std::vector<unsigned char> column_blind;
+  // Per column, the disparity and image row of the floor's end where it is the foot of a surface
+  // that matched nothing, nearer than the column's reading (ProjectionOptions::
+  // floor_end_clear_max_depth_m): the floor up to it was seen, what lies beyond it was not, so the
+  // reading's CLEAR stops there. kInvalidDisparity where none; empty when not checked.
+  std::vector<float> column_clear_end;
+  std::vector<int> column_clear_end_row;
 
   int columns() const { return static_cast<int>(column_disparity.size()); }
   bool valid(int column) const { return isValidDisparity(column_disparity[column]); }
   bool blind(int column) const { return !column_blind.empty() && column_blind[column] != 0; }
+  bool endsClear(int column) const {
+    return column_clear_end.size() == column_disparity.size() &&
+           column_clear_end_row.size() == column_clear_end.size() &&
+           isValidDisparity(column_clear_end[column]);
+  }
 };
 
 // Figure 5d: depth along the optical axis, Z = f B / d, per column; +inf where the column saw no

@@ -12,6 +12,8 @@ ProjectionOptions loadProjectionOptions(IniSection& section) {
   options.max_depth_m = section.getDouble("max_depth_m", options.max_depth_m, 0.0, 1e4);
   options.floor_end_max_depth_m =
       section.getDouble("floor_end_max_depth_m", options.floor_end_max_depth_m, 0.0, 1e4);
+  options.floor_end_clear_max_depth_m =
+      section.getDouble("floor_end_clear_max_depth_m", options.floor_end_clear_max_depth_m, 0.0, 1e4);
   options.near_floor_m = section.getDouble("near_floor_m", options.near_floor_m, 0.0, 1e4);
   options.scan_max_range_m = section.getPositive("scan_max_range_m", options.scan_max_range_m, 1e4);
   const auto fail = [&](const std::string& key, const std::string& why) {

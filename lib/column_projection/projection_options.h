@@ -29,6 +29,12 @@ struct ProjectionOptions {
   // floor's texture fades below what the matcher finds, and its end is no foot. 0 = off (the
   // paper's projection).
   double floor_end_max_depth_m = 0.0;
+  // The same foot, nearer than this depth, with a reading beyond it: the reading is kept, but its
+  // CLEAR stops at the foot (DisparityScan::column_clear_end). A window-based matcher gives the
+  // pixels of a flat-painted wall next to a textured surface far behind it that surface's
+  // disparity (the window holds only its texture), so the column reads far and its CLEAR runs
+  // through the wall; its floor, though, ends at the wall. 0 = off.
+  double floor_end_clear_max_depth_m = 0.0;
   // Below the nearest floor the camera can see, it sees nothing; a surface the matcher cannot
   // match (flat paint, or one nearer than the largest disparity searched) standing there fills
   // the image's bottom rows and leaves no trace in the scan. So a column whose rows that would
@@ -42,7 +48,7 @@ struct ProjectionOptions {
 };
 
 // Section [projection]. Keys: floor_clearance_m, robot_height_m, surface_band_px, max_depth_m,
-// floor_end_max_depth_m, near_floor_m, scan_max_range_m.
+// floor_end_max_depth_m, floor_end_clear_max_depth_m, near_floor_m, scan_max_range_m.
 // Throws ConfigError on bad values.
 ProjectionOptions loadProjectionOptions(IniSection& section);
 

@@ -8,8 +8,9 @@ IMPLEMENTS_SERIALIZABLE(CObservationDisparityScan, CObservation, stereonav)
 
 namespace stereonav {
 
-// Version 1 adds the principal point's row cy, which places a tilted head's readings by their row.
-uint8_t CObservationDisparityScan::serializeGetVersion() const { return 1; }
+// Version 1 adds the principal point's row cy, which places a tilted head's readings by their row;
+// version 2 the floor ends that stop CLEAR (DisparityScan::column_clear_end).
+uint8_t CObservationDisparityScan::serializeGetVersion() const { return 2; }
 
 void CObservationDisparityScan::serializeTo(mrpt::serialization::CArchive& out) const {
   out << timestamp << sensorLabel;
@@ -18,13 +19,17 @@ void CObservationDisparityScan::serializeTo(mrpt::serialization::CArchive& out) 
   out.WriteBufferFixEndianness(scan.column_disparity.data(), scan.column_disparity.size());
   out.WriteAs<uint32_t>(scan.column_row.size());
   for (const int row : scan.column_row) out.WriteAs<int32_t>(row);
+  out.WriteAs<uint32_t>(scan.column_clear_end.size());
+  out.WriteBufferFixEndianness(scan.column_clear_end.data(), scan.column_clear_end.size());
+  for (const int row : scan.column_clear_end_row) out.WriteAs<int32_t>(row);
 }
 
 void CObservationDisparityScan::serializeFrom(mrpt::serialization::CArchive& in,
                                               uint8_t version) {
   switch (version) {
     case 0:
-    case 1: {
+    case 1:
+    case 2: {
       in >> timestamp >> sensorLabel;
       in >> camera.focal_px >> camera.cx;
       if (version >= 1) in >> camera.cy;
@@ -35,6 +40,14 @@ void CObservationDisparityScan::serializeFrom(mrpt::serialization::CArchive& in,
       for (int& row : scan.column_row) row = in.ReadAs<int32_t>();
       // Without cy the rows cannot be placed: the readings count as seen in the optical axis' row.
       if (version == 0) scan.column_row.clear();
+      scan.column_clear_end.clear();
+      scan.column_clear_end_row.clear();
+      if (version >= 2) {
+        scan.column_clear_end.resize(in.ReadAs<uint32_t>());
+        in.ReadBufferFixEndianness(scan.column_clear_end.data(), scan.column_clear_end.size());
+        scan.column_clear_end_row.resize(scan.column_clear_end.size());
+        for (int& row : scan.column_clear_end_row) row = in.ReadAs<int32_t>();
+      }
       break;
     }
     default:

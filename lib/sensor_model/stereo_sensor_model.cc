@@ -206,6 +206,15 @@ void StereoSensorModel::readings(const DisparityScan& scan, const DisparityScanC
       readings.push_back(reading(column, disparity, camera, tilt, row >= 0 ? row : camera.cy));
     } else if (options_.clear_invalid_columns_to_m > 0.0) {
       readings.push_back(reading(column, kInvalidDisparity, camera, tilt, camera.cy));
+    } else {
+      continue;
+    }
+    if (scan.endsClear(column)) {
+      const int row = scan.column_clear_end_row[column];
+      const double floor_per_depth =
+          tilt.cos_tilt - ((row >= 0 ? row : camera.cy) - camera.cy) / camera.focal_px * tilt.sin_tilt;
+      readings.back().clear_end_m =
+          camera.depthForDisparity(scan.column_clear_end[column]) * floor_per_depth;
     }
   }
   shareEdgeRays(readings);
@@ -310,7 +319,7 @@ void StereoSensorModel::rasterize(const std::vector<ColumnReading>& readings,
   // CLEAR union's outline runs camera -> near right -> near left -> (along the shared line of
   // sight) the next column's near right ... -> camera, returning to the camera at every gap.
   const ColumnReading* previous = nullptr;
-  CellPoint previous_near_left{};
+  CellPoint previous_clear_left{};
   CellPoint previous_left{};
   EdgeLine previous_left_ray{};
   for (auto it = readings.rbegin(); it != readings.rend(); ++it) {
@@ -325,21 +334,24 @@ void StereoSensorModel::rasterize(const std::vector<ColumnReading>& readings,
     const EdgeLine left_ray = rayLine(axes, left);
     const CellPoint near_left = pointAt(axes, left, reading.nearDistance());
     const CellPoint near_right = pointAt(axes, right, reading.nearDistance());
+    const double clear_distance = reading.clearDistance();
+    const CellPoint clear_left = pointAt(axes, left, clear_distance);
+    const CellPoint clear_right = pointAt(axes, right, clear_distance);
     // A column hidden behind a nearer neighbour's silhouette has an empty wedge (left = right).
     const bool has_width = reading.right_slope > reading.left_slope;
     const EdgeLine near_edge = has_width ? EdgeLine::through(near_left, near_right) : EdgeLine{};
 
     if (adjacent) {
-      ScanEdge::appendTo(clear, previous_near_left, near_right, right_ray);
+      ScanEdge::appendTo(clear, previous_clear_left, clear_right, right_ray);
     } else {
       if (previous != nullptr) {
-        ScanEdge::appendTo(clear, previous_near_left, axes.centre, previous_left_ray);
+        ScanEdge::appendTo(clear, previous_clear_left, axes.centre, previous_left_ray);
       }
-      ScanEdge::appendTo(clear, axes.centre, near_right, right_ray);
+      ScanEdge::appendTo(clear, axes.centre, clear_right, right_ray);
     }
-    if (has_width) ScanEdge::appendTo(clear, near_right, near_left, near_edge);
+    if (has_width) ScanEdge::appendTo(clear, clear_right, clear_left, EdgeLine::through(clear_left, clear_right));
     previous = &reading;
-    previous_near_left = near_left;
+    previous_clear_left = clear_left;
     previous_left = left;
     previous_left_ray = left_ray;
 
@@ -354,7 +366,7 @@ void StereoSensorModel::rasterize(const std::vector<ColumnReading>& readings,
     raster.readings.push_back(spans);
   }
   if (previous != nullptr) {
-    ScanEdge::appendTo(clear, previous_near_left, axes.centre, previous_left_ray);
+    ScanEdge::appendTo(clear, previous_clear_left, axes.centre, previous_left_ray);
   }
   raster.clear_begin = raster.spans.size();
   appendClearSpans(options_.keep_obstacle_borders, window, raster);

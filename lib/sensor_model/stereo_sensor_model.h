@@ -4,7 +4,9 @@
 #include <mrpt/poses/CPose2D.h>
 #include <mrpt/poses/CPose3D.h>
 
+#include <algorithm>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -66,7 +68,12 @@ struct ColumnReading {
   double left_slope = 0.0;
   double right_slope = 0.0;
 
+  // CLEAR ends here (forward distance) when it is nearer than the OCC region
+  // (DisparityScan::column_clear_end).
+  double clear_end_m = std::numeric_limits<double>::infinity();
+
   double nearDistance() const { return near_depth_m * floor_per_depth; }
+  double clearDistance() const { return std::min(nearDistance(), clear_end_m); }
   double farDistance() const { return far_depth_m * floor_per_depth; }
   bool hasOccupiedRegion() const { return far_depth_m > near_depth_m && right_slope > left_slope; }
 };
@@ -134,7 +141,8 @@ class StereoSensorModel {
   // clear_invalid_columns_to_m > 0, a CLEAR-only reading per invalid column; with the shared
   // edge rays described above. A column without a row (scan.column_row empty or -1, e.g. a scan
   // not made by ColumnProjector) and a CLEAR-only reading count as seen in the optical axis' row
-  // cy. Reuses `readings`.
+  // cy. A column whose scan ends its CLEAR (DisparityScan::endsClear) gets clear_end_m there.
+  // Reuses `readings`.
   void readings(const DisparityScan& scan, const DisparityScanCamera& camera,
                 std::vector<ColumnReading>& readings) const;
   // One reading on its own (its own row's rays), seen in image row `row` (the optical axis' row

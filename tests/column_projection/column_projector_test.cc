@@ -191,6 +191,45 @@ TEST(ColumnProjectorTest, ALowUnmatchedBoxBeforeATexturedWallIsReadAtItsFoot) {
   EXPECT_EQ(scan.column_disparity[90], 5.0f);  // beside the box, the wall
 }
 
+ProjectionOptions withFloorEndClear(double max_depth_m) {
+  ProjectionOptions options = bodyVolume(0.95);
+  options.floor_end_clear_max_depth_m = max_depth_m;
+  return options;
+}
+
+TEST(ColumnProjectorTest, AFloorEndBeforeTheReadingEndsItsClear) {
+  // The painted box of the case above: the reading stays the wall behind it (d = 5), and its
+  // CLEAR ends at the box's foot, row 91 (d = 8.2). Beside the box the floor runs to the wall:
+  // nothing to end.
+  const CameraRig rig = testRig(0, 0, 0, 0);
+  cv::Mat1f disparity = levelCorridor();
+  disparity(cv::Rect(100, 66, 21, 25)).setTo(kInvalidDisparity);
+  const DisparityScan scan = ColumnProjector(rig, withFloorEndClear(3.0)).project(disparity);
+  EXPECT_EQ(scan.column_disparity[110], 5.0f);
+  EXPECT_TRUE(scan.endsClear(110));
+  EXPECT_FLOAT_EQ(scan.column_clear_end[110], 8.2f);
+  EXPECT_EQ(scan.column_clear_end_row[110], 91);
+  EXPECT_FALSE(scan.endsClear(90));
+  // Farther than the limit (Z = 1.22 m) the foot is not looked for.
+  EXPECT_FALSE(ColumnProjector(rig, withFloorEndClear(1.0)).project(disparity).endsClear(110));
+}
+
+TEST(ColumnProjectorTest, AFarGhostOnAnUnmatchedWallKeepsItsClearToTheWallsFoot) {
+  // The flat-painted wall at Z = 2 m (foot at row 75, d = 5), a few of its pixels in column 20
+  // matched at d = 2 (a textured surface far behind, in the window of pixels beside it): the
+  // reading is that ghost, 5 m deep, but its CLEAR stops at the wall's foot. Without a reading
+  // (column 30) there is no CLEAR to end.
+  const CameraRig rig = testRig(0, 0, 0, 0);
+  cv::Mat1f disparity = unmatchedWallCorridor();
+  disparity(cv::Rect(20, 45, 1, 3)).setTo(2.0f);  // 0.65-0.75 m high at Z = 5 m
+  const DisparityScan scan = ColumnProjector(rig, withFloorEndClear(3.0)).project(disparity);
+  EXPECT_EQ(scan.column_disparity[20], 2.0f);
+  EXPECT_FLOAT_EQ(scan.column_clear_end[20], 5.0f);
+  EXPECT_EQ(scan.column_clear_end_row[20], 75);
+  EXPECT_FALSE(scan.valid(30));
+  EXPECT_FALSE(scan.endsClear(30));
+}
+
 ProjectionOptions withNearFloor(double near_floor_m) {
   ProjectionOptions options = bodyVolume(0.95);
   options.near_floor_m = near_floor_m;

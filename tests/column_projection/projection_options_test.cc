@@ -11,7 +11,8 @@ namespace {
 TEST(ProjectionOptionsTest, LoadsEveryKey) {
   mrpt::config::CConfigFileMemory config(
       "[projection]\nfloor_clearance_m = 0.1\nrobot_height_m = 1.4\nsurface_band_px = 1.5\n"
-      "max_depth_m = 3\nfloor_end_max_depth_m = 2.5\nnear_floor_m = 0.4\nscan_max_range_m = 6\n");
+      "max_depth_m = 3\nfloor_end_max_depth_m = 2.5\nfloor_end_clear_max_depth_m = 3.5\nnear_floor_m = 0.4\n"
+      "scan_max_range_m = 6\n");
   IniSection section(config, "projection");
   const ProjectionOptions options = loadProjectionOptions(section);
   section.rejectUnknownKeys();
@@ -20,6 +21,7 @@ TEST(ProjectionOptionsTest, LoadsEveryKey) {
   EXPECT_DOUBLE_EQ(options.surface_band_px, 1.5);
   EXPECT_DOUBLE_EQ(options.max_depth_m, 3.0);
   EXPECT_DOUBLE_EQ(options.floor_end_max_depth_m, 2.5);
+  EXPECT_DOUBLE_EQ(options.floor_end_clear_max_depth_m, 3.5);
   EXPECT_DOUBLE_EQ(options.near_floor_m, 0.4);
   EXPECT_DOUBLE_EQ(options.scan_max_range_m, 6.0);
 }
@@ -38,6 +40,8 @@ void expectOffByDefaultAndNotNegative(const std::string& key, double ProjectionO
 TEST(ProjectionOptionsTest, DepthLimitsAreOffByDefaultAndNotNegative) {
   expectOffByDefaultAndNotNegative("max_depth_m", &ProjectionOptions::max_depth_m);
   expectOffByDefaultAndNotNegative("floor_end_max_depth_m", &ProjectionOptions::floor_end_max_depth_m);
+  expectOffByDefaultAndNotNegative("floor_end_clear_max_depth_m",
+                                   &ProjectionOptions::floor_end_clear_max_depth_m);
   expectOffByDefaultAndNotNegative("near_floor_m", &ProjectionOptions::near_floor_m);
 }
 

@@ -24,6 +24,8 @@ TEST(CObservationDisparityScanTest, SerialisesAndComesBackAsAnObservation) {
   original.sensorLabel = "TRICLOPS";
   original.scan = testing::scanOf({3.0f, kInvalidDisparity, 0.0f});
   original.scan.column_row = {17, -1, 40};
+  original.scan.column_clear_end = {6.5f, kInvalidDisparity, kInvalidDisparity};
+  original.scan.column_clear_end_row = {90, -1, -1};
   original.camera.focal_px = 190.0;
   original.camera.cx = 80.25;
   original.camera.cy = 61.75;
@@ -41,6 +43,8 @@ TEST(CObservationDisparityScanTest, SerialisesAndComesBackAsAnObservation) {
   EXPECT_EQ(copy->sensorLabel, "TRICLOPS");
   EXPECT_EQ(copy->scan.column_disparity, original.scan.column_disparity);
   EXPECT_EQ(copy->scan.column_row, original.scan.column_row);
+  EXPECT_EQ(copy->scan.column_clear_end, original.scan.column_clear_end);
+  EXPECT_EQ(copy->scan.column_clear_end_row, original.scan.column_clear_end_row);
   EXPECT_EQ(copy->camera.focal_px, 190.0);
   EXPECT_EQ(copy->camera.cx, 80.25);
   EXPECT_EQ(copy->camera.cy, 61.75);

@@ -126,6 +126,29 @@ TEST(StereoSensorModelTest, InvalidColumnsClearNothingUnlessAsked) {
                                 cellAt(2, 1), cellAt(3, -1), cellAt(3, 0), cellAt(3, 1)}));
 }
 
+TEST(StereoSensorModelTest, AClearEndStopsClearButNotOcc) {
+  // f = 1, cx = 0, fB = 4, a level head: the wedge |y| <= x/2; d = 0.5 gives CLEAR [0, Z(1) = 4)
+  // and OCC [4, max_range_m = 6). A floor end at d = 1.6 (2.5 m) keeps CLEAR to the centres
+  // x = 0, 1, 2; the row x = 3 (|y| <= 1.5) gets no update at all, and OCC stays where
+  // equation 1 puts it.
+  const DisparityScanCamera cam = camera(1.0, 0.0, 4.0);
+  DisparityScan scan = scanOf({0.5f});
+  SensorModelOptions options;
+  options.max_range_m = 6.0;
+  const StereoSensorModel model(options);
+  const RasterCells full = rasterCells(model, cam, scan, mrpt::poses::CPose2D());
+  scan.column_clear_end = {1.6f};
+  scan.column_clear_end_row = {30};
+  const RasterCells cut = rasterCells(model, cam, scan, mrpt::poses::CPose2D());
+  const Cells near_clear{cellAt(0, 0), cellAt(1, 0), cellAt(2, -1), cellAt(2, 0), cellAt(2, 1)};
+  EXPECT_EQ(cut.clear, near_clear);
+  Cells full_clear = near_clear;
+  for (int y = -1; y <= 1; ++y) full_clear.insert(cellAt(3, y));
+  EXPECT_EQ(full.clear, full_clear);
+  EXPECT_EQ(cut.occupied, full.occupied);
+  EXPECT_EQ(full.occupied.count(cellAt(4, 0)), 1u);
+}
+
 TEST(StereoSensorModelTest, CellsOnRegionBoundariesFollowTheHalfOpenRule) {
   // One column, f = 1, cx = 0: the lines of sight are y = +x/2 (image left) and y = -x/2.
   // fB = 4 and d = 1.5: near depth 4/2 = 2, far depth 4/1 = 4. The camera is at the origin
