@@ -132,9 +132,14 @@ TEST(ColumnProjectorTest, ZeroDisparityIsNoObstacle) {
   EXPECT_EQ(scan.column_disparity[8], 0.5f);
 }
 
-ProjectionOptions withFloorEnd(double max_depth_m) {
+constexpr double ProjectionOptions::*kFloorEnd = &ProjectionOptions::floor_end_max_depth_m;
+constexpr double ProjectionOptions::*kFloorEndClear = &ProjectionOptions::floor_end_clear_max_depth_m;
+constexpr double ProjectionOptions::*kNearFloor = &ProjectionOptions::near_floor_m;
+
+// The body volume up to 0.95 m with one of the depth options above set.
+ProjectionOptions bodyVolumeWith(double ProjectionOptions::*option, double value_m) {
   ProjectionOptions options = bodyVolume(0.95);
-  options.floor_end_max_depth_m = max_depth_m;
+  options.*option = value_m;
   return options;
 }
 
@@ -151,7 +156,7 @@ TEST(ColumnProjectorTest, AnUnmatchedWallIsReadAtTheFloorsEnd) {
   const CameraRig rig = testRig(0, 0, 0, 0);
   const DisparityScan off = ColumnProjector(rig, bodyVolume(0.95)).project(unmatchedWallCorridor());
   EXPECT_FALSE(off.valid(20));  // the paper's projection sees nothing there
-  const DisparityScan scan = ColumnProjector(rig, withFloorEnd(3.0)).project(unmatchedWallCorridor());
+  const DisparityScan scan = ColumnProjector(rig, bodyVolumeWith(kFloorEnd, 3.0)).project(unmatchedWallCorridor());
   for (int x = 0; x < 201; ++x) {
     const bool box = x >= 150 && x <= 160;
     // The foot on the floor plane: row 75 is 25 rows below the centre, Z = 0.5 * 100 / 25 = 2 m.
@@ -162,7 +167,7 @@ TEST(ColumnProjectorTest, AnUnmatchedWallIsReadAtTheFloorsEnd) {
 
 TEST(ColumnProjectorTest, AFloorEndFartherThanTheLimitIsNoFoot) {
   const CameraRig rig = testRig(0, 0, 0, 0);
-  EXPECT_FALSE(ColumnProjector(rig, withFloorEnd(1.9)).project(unmatchedWallCorridor()).valid(20));
+  EXPECT_FALSE(ColumnProjector(rig, bodyVolumeWith(kFloorEnd, 1.9)).project(unmatchedWallCorridor()).valid(20));
 }
 
 TEST(ColumnProjectorTest, AGapInTheFloorsTextureIsNoFoot) {
@@ -171,9 +176,18 @@ TEST(ColumnProjectorTest, AGapInTheFloorsTextureIsNoFoot) {
   const CameraRig rig = testRig(0, 0, 0, 0);
   cv::Mat1f disparity = levelCorridor();
   disparity(cv::Rect(0, 78, 201, 5)).setTo(kInvalidDisparity);
-  const DisparityScan scan = ColumnProjector(rig, withFloorEnd(3.0)).project(disparity);
+  const DisparityScan scan = ColumnProjector(rig, bodyVolumeWith(kFloorEnd, 3.0)).project(disparity);
   EXPECT_EQ(scan.column_disparity[20], 5.0f);
   EXPECT_EQ(scan.column_row[20], 28);
+}
+
+// levelCorridor() with a flat-painted box 0.3 m high at Z = 1.25 m in columns 100..120: rows
+// 66..90 (heights 0.3 down to 0 at that depth) match nothing; the textured wall (d = 5) shows
+// above it.
+cv::Mat1f paintedBoxCorridor() {
+  cv::Mat1f disparity = levelCorridor();
+  disparity(cv::Rect(100, 66, 21, 25)).setTo(kInvalidDisparity);
+  return disparity;
 }
 
 TEST(ColumnProjectorTest, ALowUnmatchedBoxBeforeATexturedWallIsReadAtItsFoot) {
@@ -181,20 +195,13 @@ TEST(ColumnProjectorTest, ALowUnmatchedBoxBeforeATexturedWallIsReadAtItsFoot) {
   // down to 0 at that depth) match nothing; the textured wall (d = 5) shows above it. The floor
   // ends at row 91 (Z = 50 / 41 = 1.22 m, d = 8.2), the box's foot to within a row.
   const CameraRig rig = testRig(0, 0, 0, 0);
-  cv::Mat1f disparity = levelCorridor();
-  disparity(cv::Rect(100, 66, 21, 25)).setTo(kInvalidDisparity);
+  const cv::Mat1f disparity = paintedBoxCorridor();
   const DisparityScan without = ColumnProjector(rig, bodyVolume(0.95)).project(disparity);
   EXPECT_EQ(without.column_disparity[110], 5.0f);  // the wall behind: the box is not seen
-  const DisparityScan scan = ColumnProjector(rig, withFloorEnd(3.0)).project(disparity);
+  const DisparityScan scan = ColumnProjector(rig, bodyVolumeWith(kFloorEnd, 3.0)).project(disparity);
   EXPECT_FLOAT_EQ(scan.column_disparity[110], 8.2f);
   EXPECT_EQ(scan.column_row[110], 91);
   EXPECT_EQ(scan.column_disparity[90], 5.0f);  // beside the box, the wall
-}
-
-ProjectionOptions withFloorEndClear(double max_depth_m) {
-  ProjectionOptions options = bodyVolume(0.95);
-  options.floor_end_clear_max_depth_m = max_depth_m;
-  return options;
 }
 
 TEST(ColumnProjectorTest, AFloorEndBeforeTheReadingEndsItsClear) {
@@ -202,16 +209,15 @@ TEST(ColumnProjectorTest, AFloorEndBeforeTheReadingEndsItsClear) {
   // CLEAR ends at the box's foot, row 91 (d = 8.2). Beside the box the floor runs to the wall:
   // nothing to end.
   const CameraRig rig = testRig(0, 0, 0, 0);
-  cv::Mat1f disparity = levelCorridor();
-  disparity(cv::Rect(100, 66, 21, 25)).setTo(kInvalidDisparity);
-  const DisparityScan scan = ColumnProjector(rig, withFloorEndClear(3.0)).project(disparity);
+  const cv::Mat1f disparity = paintedBoxCorridor();
+  const DisparityScan scan = ColumnProjector(rig, bodyVolumeWith(kFloorEndClear, 3.0)).project(disparity);
   EXPECT_EQ(scan.column_disparity[110], 5.0f);
   EXPECT_TRUE(scan.endsClear(110));
   EXPECT_FLOAT_EQ(scan.column_clear_end[110], 8.2f);
   EXPECT_EQ(scan.column_clear_end_row[110], 91);
   EXPECT_FALSE(scan.endsClear(90));
   // Farther than the limit (Z = 1.22 m) the foot is not looked for.
-  EXPECT_FALSE(ColumnProjector(rig, withFloorEndClear(1.0)).project(disparity).endsClear(110));
+  EXPECT_FALSE(ColumnProjector(rig, bodyVolumeWith(kFloorEndClear, 1.0)).project(disparity).endsClear(110));
 }
 
 TEST(ColumnProjectorTest, AFarGhostOnAnUnmatchedWallKeepsItsClearToTheWallsFoot) {
@@ -222,18 +228,12 @@ TEST(ColumnProjectorTest, AFarGhostOnAnUnmatchedWallKeepsItsClearToTheWallsFoot)
   const CameraRig rig = testRig(0, 0, 0, 0);
   cv::Mat1f disparity = unmatchedWallCorridor();
   disparity(cv::Rect(20, 45, 1, 3)).setTo(2.0f);  // 0.65-0.75 m high at Z = 5 m
-  const DisparityScan scan = ColumnProjector(rig, withFloorEndClear(3.0)).project(disparity);
+  const DisparityScan scan = ColumnProjector(rig, bodyVolumeWith(kFloorEndClear, 3.0)).project(disparity);
   EXPECT_EQ(scan.column_disparity[20], 2.0f);
   EXPECT_FLOAT_EQ(scan.column_clear_end[20], 5.0f);
   EXPECT_EQ(scan.column_clear_end_row[20], 75);
   EXPECT_FALSE(scan.valid(30));
   EXPECT_FALSE(scan.endsClear(30));
-}
-
-ProjectionOptions withNearFloor(double near_floor_m) {
-  ProjectionOptions options = bodyVolume(0.95);
-  options.near_floor_m = near_floor_m;
-  return options;
 }
 
 // In levelCorridor() the nearest floor the camera sees is the bottom row's, Z = 50 / (100 - 50)
@@ -246,7 +246,7 @@ TEST(ColumnProjectorTest, AColumnThatMatchesNoneOfTheNearestFloorIsBlind) {
   disparity(cv::Rect(30, 92, 11, 9)).setTo(kInvalidDisparity);   // 9 of the 11 rows: blind
   disparity(cv::Rect(60, 95, 11, 6)).setTo(kInvalidDisparity);   // 6 of 11: a gap in the texture
   disparity(cv::Rect(120, 0, 5, 101)).setTo(kInvalidDisparity);  // nothing at all
-  const DisparityScan scan = ColumnProjector(rig, withNearFloor(0.25)).project(disparity);
+  const DisparityScan scan = ColumnProjector(rig, bodyVolumeWith(kNearFloor, 0.25)).project(disparity);
   ASSERT_EQ(scan.column_blind.size(), 201u);
   for (int x = 0; x < 201; ++x) {
     const bool blind = (x >= 30 && x <= 40) || (x >= 120 && x <= 124);
@@ -256,13 +256,13 @@ TEST(ColumnProjectorTest, AColumnThatMatchesNoneOfTheNearestFloorIsBlind) {
   EXPECT_EQ(scan.column_disparity[35], 5.0f);
   EXPECT_FALSE(scan.valid(122));
   // With a deeper band (Z <= 2: rows 75..100, 26 rows) the same 9 unmatched rows are a gap.
-  EXPECT_FALSE(ColumnProjector(rig, withNearFloor(1.0)).project(disparity).blind(35));
+  EXPECT_FALSE(ColumnProjector(rig, bodyVolumeWith(kNearFloor, 1.0)).project(disparity).blind(35));
 }
 
 TEST(ColumnProjectorTest, NoColumnIsBlindWithoutFloorInSight) {
   // Tilted 60 degrees up, the camera sees no floor at all: nothing to miss.
   const CameraRig rig = testRig(0, 0, 0, -60);
-  const DisparityScan scan = ColumnProjector(rig, withNearFloor(0.25)).project(cv::Mat1f(101, 201, kInvalidDisparity));
+  const DisparityScan scan = ColumnProjector(rig, bodyVolumeWith(kNearFloor, 0.25)).project(cv::Mat1f(101, 201, kInvalidDisparity));
   for (int x = 0; x < 201; ++x) EXPECT_FALSE(scan.blind(x)) << "column " << x;
 }
 
