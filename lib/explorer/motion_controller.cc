@@ -67,8 +67,8 @@ MotionController::Drive MotionController::drive(const mrpt::poses::CPose2D& pose
 }
 
 std::optional<VelocityCommand> MotionController::lookAround(const mrpt::poses::CPose2D& pose, bool continuing) {
-  if (continuing) {
-    turned_rad_ += std::abs(mrpt::math::wrapToPi(pose.phi() - last_phi_));
+  if (continuing && last_phi_) {
+    turned_rad_ += std::abs(mrpt::math::wrapToPi(pose.phi() - *last_phi_));
   } else {
     turned_rad_ = 0.0;
   }

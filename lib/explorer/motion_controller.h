@@ -62,7 +62,9 @@ class MotionController {
 
   ExplorerOptions options_;
   double turned_rad_ = 0.0;  // by the current look-around
-  double last_phi_ = 0.0;
+  // The heading at the previous look-around cycle; none before the first, so that a look-around
+  // the explorer starts in (initial_look_around) does not count the start heading as turned.
+  std::optional<double> last_phi_;
   bool looked_around_here_ = false;
   double look_around_x_ = 0.0;
   double look_around_y_ = 0.0;

@@ -79,6 +79,17 @@ TEST(MotionControllerTest, WhileDrivingAHeadingErrorSlowsItWithItsSquare) {
   EXPECT_NEAR(drive.command.turn_rate, 0.6, 1e-9);  // heading gain 2 x 0.3 rad
 }
 
+TEST(MotionControllerTest, ALookAroundBegunAsContinuingStillTurnsAFullCircle) {
+  // The explorer starts in its look-around phase, so its first call already says `continuing`.
+  // A robot starting at heading 2.8 rad must still turn 2 pi from there: 0.5 rad per cycle, the
+  // 13th step completes it, as from a fresh start.
+  MotionController motion(options());
+  int cycles = 0;
+  for (double phi = 2.8; motion.lookAround(mrpt::poses::CPose2D(0.0, 0.0, phi), true).has_value(); phi += 0.5) ++cycles;
+  EXPECT_EQ(cycles, 13);
+  EXPECT_TRUE(motion.lookedAroundHere());
+}
+
 TEST(MotionControllerTest, ALookAroundEndsAfterAFullTurnAndHoldsUntilTheRobotMovesOn) {
   MotionController motion(options());
   ASSERT_TRUE(motion.lookAround(mrpt::poses::CPose2D(0.0, 0.0, 0.0), false).has_value());
