@@ -38,6 +38,12 @@ void readPartTunables(IniSection& section, ExplorerOptions& options) {
   options.speck_cells = section.getInt("speck_cells", options.speck_cells);
   if (options.speck_cells < 0) throw ConfigError("[" + section.name() + "] speck_cells: must not be negative");
   options.look_from_afar_m = section.getNonNegative("look_from_afar_m", options.look_from_afar_m);
+  options.recovery_restarts = section.getInt("recovery_restarts", options.recovery_restarts);
+  if (options.recovery_restarts < 0) {
+    throw ConfigError("[" + section.name() + "] recovery_restarts: must not be negative");
+  }
+  options.recovery_restart_spacing_s =
+      section.getNonNegative("recovery_restart_spacing_s", options.recovery_restart_spacing_s);
 }
 
 }  // namespace

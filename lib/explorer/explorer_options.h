@@ -149,6 +149,13 @@ struct ExplorerOptions {
   // door's jambs a cell too wide, streaks of unseen floor between far readings' columns). A
   // frontier still there after that look is given up. 0: give up at once.
   double look_from_afar_m = 2.0;
+  // Before giving up on every frontier the robot starts the recovery again: it looks around
+  // afresh and plans without relaxing. While it climbed, the map changed (a person who boxed it
+  // in has left, a speck the guard held it at is kept from then on), and what it gave up may be
+  // reachable now. At most recovery_restarts times a run, recovery_restart_spacing_s apart, so
+  // that a building that is truly finished ends the run. 0: give up at once.
+  int recovery_restarts = 3;
+  double recovery_restart_spacing_s = 30.0;
 };
 
 // Section [explorer]: robot_radius_m, safety_margin_m, repulsion_distance_m, repulsion_weight,
@@ -163,7 +170,7 @@ struct ExplorerOptions {
 // blocked_command_mps, blocked_speed_mps, blocked_s, back_off_speed_mps, back_off_s,
 // facing_tolerance_deg, min_turn_rate, turn_braking, look_around_spacing_m, escape_speed_mps,
 // resolving_views, look_hold_s, arrived_m, progress_m, visit_spacing_m, escape_search_m,
-// failed_escape_m, speck_cells, look_from_afar_m.
+// failed_escape_m, speck_cells, look_from_afar_m, recovery_restarts, recovery_restart_spacing_s.
 ExplorerOptions loadExplorerOptions(IniSection& section);
 
 }  // namespace stereonav

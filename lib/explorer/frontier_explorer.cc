@@ -58,7 +58,9 @@ void FrontierExplorer::updateMap(const DisparityTaggedGrid& grid, const mrpt::po
   seen_free_.update(grid, pose);
   grid_ = std::make_unique<NavigationGrid>(grid, visited_, grid_options_, guard_.rememberedObstacles(),
                                            seen_free_.cells(), grid_.get());
-  if (relaxation_ >= Relaxation::kBareBodyPastSpecks) grid_->freeSpecks(options_.speck_cells);
+  // What the robot remembers now was kept when planning relaxed past specks (recoverUnreachable)
+  // or learnt since, the guard having held it there: a post, not a mismatch.
+  if (relaxation_ >= Relaxation::kBareBodyPastSpecks) grid_->freeSpecks(options_.speck_cells, guard_.rememberedObstacles());
   map_frontiers_ = findFrontiers(*grid_, options_.min_frontier_cells);
   awaiting_map_ = false;
   frontier_memory_.countCloseViews(*grid_, map_frontiers_, pose);
@@ -173,7 +175,7 @@ VelocityCommand FrontierExplorer::decide(const mrpt::poses::CPose2D& pose, doubl
   if (status_.phase == ExplorerPhase::kEscaping) status_.phase = ExplorerPhase::kTurning;
   escape_to_.reset();
   failed_escapes_.clear();
-  if (!field_->reachable(col, row)) return recoverUnreachable(pose);
+  if (!field_->reachable(col, row)) return recoverUnreachable(pose, time_s);
 
   const std::vector<cv::Point> path = field_->pathFrom(col, row);
   const cv::Point2d goal(grid_->centreX(path.back().x), grid_->centreY(path.back().y));
@@ -223,7 +225,7 @@ VelocityCommand FrontierExplorer::escape(const mrpt::poses::CPose2D& pose, int c
   return motion_.approach(pose, *escape_to_);
 }
 
-VelocityCommand FrontierExplorer::recoverUnreachable(const mrpt::poses::CPose2D& pose) {
+VelocityCommand FrontierExplorer::recoverUnreachable(const mrpt::poses::CPose2D& pose, double time_s) {
   if (!motion_.lookedAroundHere()) return lookAround(pose);
   NearObstacleMemory& near_obstacles = guard_.nearObstacles();
   if (frontiers_.empty() && frontier_memory_.looks() == 0) {
@@ -249,10 +251,11 @@ VelocityCommand FrontierExplorer::recoverUnreachable(const mrpt::poses::CPose2D&
   } else if (relaxation_ < Relaxation::kBareBodyPastSpecks) {
     // Boxed in by specks: lone obstacle cells amid free space, each inflated by the body's
     // radius, in the gaps beside furniture. Up close they are below the cameras' view, so no
-    // look clears them; most are stereo mismatches that repeated. Plan past them; the guard
-    // brakes for any the scans show to be real.
+    // look clears them; most are stereo mismatches that repeated. Plan past them, but not past
+    // what the body has bumped into, and forget the near obstacles on them; the guard brakes for
+    // any the scans show to be real, and those it holds the robot at are kept from then on.
     relaxation_ = Relaxation::kBareBodyPastSpecks;
-    grid_->freeSpecks(options_.speck_cells);
+    grid_->freeSpecks(options_.speck_cells, guard_.contacts());
     near_obstacles.forgetUnconfirmed([&](double x, double y) {
       int c = 0, r = 0;
       return !grid_->cellAt(x, y, c, r) || grid_->cellClass(c, r) != NavigationGrid::kFree;
@@ -264,6 +267,16 @@ VelocityCommand FrontierExplorer::recoverUnreachable(const mrpt::poses::CPose2D&
     // one at a time; what a closer view does not open is given up (lookAtFrontier).
     relaxation_ = Relaxation::kLookFromAfar;
     replan();
+  } else if (recovery_restarts_ < options_.recovery_restarts &&
+             time_s - last_recovery_restart_s_ >= options_.recovery_restart_spacing_s) {
+    // Give up only on what is still unreachable after a fresh look: see recovery_restarts.
+    ++recovery_restarts_;
+    last_recovery_restart_s_ = time_s;
+    motion_.forgetLookAround();
+    forgot_here_ = false;
+    relaxation_ = Relaxation::kNone;
+    replan();
+    return lookAround(pose);
   } else {
     size_t cells = 0;
     for (const Frontier& frontier : frontiers_) cells += frontier.cells.size();

@@ -3,6 +3,7 @@
 #include <mrpt/nav/reactive/CRobot2NavInterface.h>
 #include <mrpt/poses/CPose2D.h>
 
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -71,7 +72,7 @@ class FrontierExplorer {
                           mrpt::nav::CRobot2NavInterface& robot);
   VelocityCommand decide(const mrpt::poses::CPose2D& pose, double time_s);
   VelocityCommand escape(const mrpt::poses::CPose2D& pose, int col, int row);
-  VelocityCommand recoverUnreachable(const mrpt::poses::CPose2D& pose);
+  VelocityCommand recoverUnreachable(const mrpt::poses::CPose2D& pose, double time_s);
   VelocityCommand lookAtFrontier(const mrpt::poses::CPose2D& pose, int col, int row, double time_s);
   VelocityCommand lookAround(const mrpt::poses::CPose2D& pose);
   VelocityCommand backOff(const mrpt::poses::CPose2D& pose);
@@ -106,6 +107,8 @@ class FrontierExplorer {
   double forgot_x_ = 0.0;
   double forgot_y_ = 0.0;
   bool awaiting_map_ = false;
+  int recovery_restarts_ = 0;
+  double last_recovery_restart_s_ = -std::numeric_limits<double>::infinity();
   // Progress watch: the lowest cost-to-go reached and when.
   double best_cost_ = 0.0;
   double best_cost_time_ = 0.0;

@@ -45,6 +45,7 @@ class MotionController {
   // (forgetLookAroundIfMoved).
   bool lookedAroundHere() const { return looked_around_here_; }
   void forgetLookAroundIfMoved(const mrpt::poses::CPose2D& pose);
+  void forgetLookAround() { looked_around_here_ = false; }
 
   // Towards a nearby point at escape_speed_mps, after facing it.
   VelocityCommand approach(const mrpt::poses::CPose2D& pose, const cv::Point2d& point) const;

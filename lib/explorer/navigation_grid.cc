@@ -95,9 +95,14 @@ NavigationGrid::NavigationGrid(const DisparityTaggedGrid& grid, const std::vecto
   }
 }
 
-void NavigationGrid::freeSpecks(int max_cells) {
+void NavigationGrid::freeSpecks(int max_cells, const std::vector<cv::Point2d>& keep) {
   const cv::Mat1b classes_before = cell_class_.clone();
-  freeIslands(kImprecise, kOccupied, 8, max_cells);
+  std::vector<cv::Point> kept_cells;
+  for (const cv::Point2d& point : keep) {
+    int col = 0, row = 0;
+    if (cellAt(point.x, point.y, col, row)) kept_cells.emplace_back(col, row);
+  }
+  freeIslands(kImprecise, kOccupied, 8, max_cells, kept_cells);
   if (horizonCells() > 0) {
     updateDistances(classes_before);
   } else {
@@ -137,7 +142,8 @@ void NavigationGrid::updateDistances(const cv::Mat1b& classes_before) {
       .copyTo(obstacle_distance_m_(updated));
 }
 
-void NavigationGrid::freeIslands(uint8_t lowest_class, uint8_t highest_class, int connectivity, int max_cells) {
+void NavigationGrid::freeIslands(uint8_t lowest_class, uint8_t highest_class, int connectivity, int max_cells,
+                                 const std::vector<cv::Point>& kept_cells) {
   // An island borders free cells only, so it lies inside the free cells' bounding box, and a
   // region that reaches the box's edge is none (its neighbour beyond is not free): only the box
   // is labelled, and freeing islands leaves the box as it was.
@@ -154,6 +160,9 @@ void NavigationGrid::freeIslands(uint8_t lowest_class, uint8_t highest_class, in
   }
   std::vector<uint8_t> frees(static_cast<size_t>(count), 0);
   for (int label = 1; label < count; ++label) frees[label] = areas[label] <= max_cells;
+  for (const cv::Point& cell : kept_cells) {
+    if (box.contains(cell)) frees[labels(cell.y - box.y, cell.x - box.x)] = 0;
+  }
   static const int kNeighbours[8][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}, {1, 1}, {1, -1}, {-1, 1}, {-1, -1}};
   cv::Mat1b classes = cell_class_(box);  // a view: the islands are freed through it
   for (int row = 0; row < box.height; ++row) {

@@ -68,8 +68,9 @@ class NavigationGrid {
   // Obstacle islands (occupied or imprecise, 8-connected) of at most `max_cells` cells whose
   // every neighbour is free become free: as a rule a stereo mismatch that repeated rather than a
   // post. The explorer passes them only when nothing else is reachable, with the reactive guard
-  // judging them from the scans.
-  void freeSpecks(int max_cells);
+  // judging them from the scans; an island holding a point of `keep` stays (a post the guard has
+  // stopped the robot at is no mismatch).
+  void freeSpecks(int max_cells, const std::vector<cv::Point2d>& keep = {});
   // Whether the stereo map itself is sure of an obstacle at (x, y): its occupancy value is at
   // least sure_obstacle_g (the `contacts` the planner adds do not count).
   bool mapHoldsObstacle(double x, double y) const;
@@ -90,8 +91,9 @@ class NavigationGrid {
  private:
   // Islands of cells whose class is from `lowest_class` to `highest_class` (`connectivity` 4 or
   // 8) of at most `max_cells` cells, bordered by free cells only (not by other cells or the
-  // grid's edge), become free.
-  void freeIslands(uint8_t lowest_class, uint8_t highest_class, int connectivity, int max_cells);
+  // grid's edge), become free, unless one holds a cell of `kept_cells`.
+  void freeIslands(uint8_t lowest_class, uint8_t highest_class, int connectivity, int max_cells,
+                   const std::vector<cv::Point>& kept_cells = {});
   // Takes every distance afresh.
   void computeDistances();
   // Takes again the distances near cells whose class differs from `classes_before`, for which

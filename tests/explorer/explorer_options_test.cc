@@ -21,7 +21,7 @@ TEST(ExplorerOptionsTest, TheTunablesOfTheExplorersPartsAreReadFromTheIni) {
       "back_off_s = 1\nfacing_tolerance_deg = 10\nmin_turn_rate = 0.3\nturn_braking = 2\n"
       "look_around_spacing_m = 1.5\nescape_speed_mps = 0.25\nresolving_views = 8\nlook_hold_s = 2\n"
       "arrived_m = 0.5\nprogress_m = 0.2\nvisit_spacing_m = 0.2\nescape_search_m = 2\nfailed_escape_m = 0.4\n"
-      "speck_cells = 3\nlook_from_afar_m = 1.5\n");
+      "speck_cells = 3\nlook_from_afar_m = 1.5\nrecovery_restarts = 1\nrecovery_restart_spacing_s = 12\n");
   EXPECT_EQ(options.guard_horizon_m, 3.0);
   EXPECT_EQ(options.stop_gap_m, 0.4);
   EXPECT_EQ(options.scan_memory_s, 0.5);
@@ -46,6 +46,8 @@ TEST(ExplorerOptionsTest, TheTunablesOfTheExplorersPartsAreReadFromTheIni) {
   EXPECT_EQ(options.failed_escape_m, 0.4);
   EXPECT_EQ(options.speck_cells, 3);
   EXPECT_EQ(options.look_from_afar_m, 1.5);
+  EXPECT_EQ(options.recovery_restarts, 1);
+  EXPECT_EQ(options.recovery_restart_spacing_s, 12.0);
 }
 
 TEST(ExplorerOptionsTest, WithoutTheKeysTheDefaultsAreExactlyTheStructs) {
@@ -60,6 +62,7 @@ TEST(ExplorerOptionsTest, WithoutTheKeysTheDefaultsAreExactlyTheStructs) {
 TEST(ExplorerOptionsTest, OutOfRangeValuesNameTheKey) {
   EXPECT_NE(configErrorOf([] { load("resolving_views = 0\n"); }).find("resolving_views"), std::string::npos);
   EXPECT_NE(configErrorOf([] { load("speck_cells = -1\n"); }).find("speck_cells"), std::string::npos);
+  EXPECT_NE(configErrorOf([] { load("recovery_restarts = -1\n"); }).find("recovery_restarts"), std::string::npos);
   EXPECT_NE(configErrorOf([] { load("look_from_afar_m = -1\n"); }).find("look_from_afar_m"), std::string::npos);
   EXPECT_NE(configErrorOf([] { load("facing_tolerance_deg = 120\n"); }).find("facing_tolerance_deg"),
             std::string::npos);

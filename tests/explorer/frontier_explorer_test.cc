@@ -153,6 +153,52 @@ TEST(FrontierExplorerTest, StopsWhenTheOnlyFrontierIsBeyondADoorTooNarrowAndFart
   EXPECT_NEAR(robot.pose_.x, 2.0, 1e-9);
 }
 
+// From (2, 2) facing east, with a frontier beyond a door too narrow and farther than it looks
+// from: how far the robot turned and why it stopped (if it did) within 120 s. Once it has turned
+// more than one look around, the door is widened to 1.3 m if `door_opens`, as when a person who
+// stood in it leaves.
+struct RecoveryOutcome {
+  double turned = 0.0;
+  double final_x = 0.0;
+  std::string stop_reason;
+};
+RecoveryOutcome recoverAtADoorTooNarrow(const ExplorerOptions& options, bool door_opens) {
+  TestGrid cells = doorTooNarrowForTheBody();
+  FrontierExplorer explorer(options);
+  KinematicRobot robot({2.0, 2.0, 0.0});
+  bool opened = false;
+  for (int steps = 0; steps < 2400 && !explorer.finished(); ++steps) {
+    if (door_opens && !opened && robot.turned_ > 2.0 * M_PI + 1.0) {
+      cells.free(50, 14, 60, 26).unknown(61, 14, 61, 26);
+      opened = true;
+    }
+    if (steps % 4 == 0) explorer.updateMap(cells.grid(), mrpt::poses::CPose2D(robot.pose_));  // 5 Hz
+    if (!explorer.controlStep(robot)) break;
+    robot.step(0.05);
+  }
+  return {robot.turned_, robot.pose_.x, explorer.stopReason()};
+}
+
+TEST(FrontierExplorerTest, BeforeGivingUpItLooksAroundAgainAndTakesAWayThatHasOpenedSince) {
+  ExplorerOptions options = testOptions();
+  options.look_from_afar_m = 1.0;
+  const RecoveryOutcome opened = recoverAtADoorTooNarrow(options, true);
+  EXPECT_GT(opened.final_x, 5.2) << opened.stop_reason;  // through the door (the wall: x 5.0 .. 5.1)
+  // Nothing opens: one look around, one more after the ladder's end, then it stops, the second
+  // end coming sooner than recovery_restart_spacing_s after the first.
+  const RecoveryOutcome closed = recoverAtADoorTooNarrow(options, false);
+  EXPECT_EQ(closed.stop_reason.rfind("no reachable frontier left", 0), 0u) << closed.stop_reason;
+  EXPECT_GE(closed.turned, 4.0 * M_PI - 0.2);
+  EXPECT_LE(closed.turned, 4.0 * M_PI + 1.0);
+  EXPECT_NEAR(closed.final_x, 2.0, 1e-9);
+  // Without restarts it gives up after the first look, and the door never opens.
+  options.recovery_restarts = 0;
+  const RecoveryOutcome at_once = recoverAtADoorTooNarrow(options, true);
+  EXPECT_EQ(at_once.stop_reason.rfind("no reachable frontier left", 0), 0u) << at_once.stop_reason;
+  EXPECT_LE(at_once.turned, 2.0 * M_PI + 0.5);
+  EXPECT_NEAR(at_once.final_x, 2.0, 1e-9);
+}
+
 TEST(FrontierExplorerTest, WhenNothingElseIsReachableItPlansPastALoneSpeckInAPassage) {
   // A passage 1.1 m wide (free y 1.1 .. 2.2) with the only frontier at its end (x = 4.0), and
   // one obstacle cell in its middle at x = 2.0: inflated by the body it closes the passage, a

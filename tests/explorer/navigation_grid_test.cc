@@ -213,6 +213,23 @@ TEST(NavigationGridTest, FreeingSpecksClearsLoneObstacleCellsOnlyAndTheClearance
   EXPECT_NEAR(grid.obstacleDistance(3, 10), 0.35, 1e-6);
 }
 
+TEST(NavigationGridTest, SpecksHoldingAPointToKeepStay) {
+  // Three lone specks in free floor; a point to keep (where the guard held the robot) lies in
+  // the second, and another in one cell of the third, a two-cell island.
+  TestGrid cells(30, 20);
+  cells.free(0, 0, 29, 19).occupied(5, 10, 5, 10).occupied(15, 10, 15, 10).occupied(20, 10, 20, 10).occupied(21, 11, 21, 11);
+  NavigationGrid grid(cells.grid(), {}, NavigationGridOptions());
+  grid.freeSpecks(2, {{1.55, 1.05}, {2.14, 1.17}});
+  EXPECT_EQ(grid.cellClass(5, 10), NavigationGrid::kFree);
+  EXPECT_EQ(grid.cellClass(15, 10), NavigationGrid::kOccupied);
+  EXPECT_EQ(grid.cellClass(20, 10), NavigationGrid::kOccupied);  // kept with the cell of its island
+  EXPECT_EQ(grid.cellClass(21, 11), NavigationGrid::kOccupied);
+  // Two cells north of the kept speck: 1.5 cells from its edge.
+  EXPECT_NEAR(grid.clearance(15, 12), 0.15, 1e-6);
+  // Where a freed speck stood, the nearest blocked cell is the grid's border beyond column 0.
+  EXPECT_NEAR(grid.clearance(5, 12), 0.55, 1e-6);
+}
+
 TEST(NavigationGridTest, ObstaclesSeenOnlyAtLowDisparityAreImprecise) {
   TestGrid cells(20, 20);
   cells.free(0, 0, 19, 19).occupied(10, 0, 10, 19).tag(10, 0, 10, 9, 2.5f).tag(10, 10, 10, 19, 3.0f);
