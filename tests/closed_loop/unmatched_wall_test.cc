@@ -14,8 +14,6 @@
 
 #include "closed_loop/exploration_run.h"
 #include "closed_loop/simulated_robot_interface.h"
-#include "column_projection/blind_column_points.h"
-#include "column_projection/virtual_range_scan.h"
 #include "explorer/safety_guard.h"
 #include "mapping/map_outputs.h"
 #include "mapping/stereo_mapper.h"
@@ -120,8 +118,8 @@ TEST(UnmatchedWallTest, TheExplorerStopsShortOfAFlatPaintedWall) {
   expectStopsShortOfThePaintedWall(config, "corridor_floor_end");
 }
 
-// The explorer's guard, fed what the head senses (the virtual scan and the blind columns' points,
-// as exploration_run.cc feeds it), holds a robot told to drive at 0.5 m/s straight at the painted
+// The explorer's guard, fed what the head senses (CSimulatedRobotInterface::setSensedScan, as
+// exploration_run.cc feeds it), holds a robot told to drive at 0.5 m/s straight at the painted
 // wall from `start_x` for 4 s. Returns the collisions.
 int collisionsDrivingAtThePaint(const ExplorationConfig& config, double start_x) {
   const World world = corridorFrom(start_x);
@@ -135,11 +133,8 @@ int collisionsDrivingAtThePaint(const ExplorationConfig& config, double start_x)
       const SimulatedFrame frame = simulation.renderFrame();
       const RigFrame rig_frame = rigFrameOf(frame, simulator.rig);
       mapper.process(rig_frame, frame.odometry);
-      const DisparityScan& scan = mapper.disparityScan().scan;
-      mrpt::obs::CObservation2DRangeScan sensed = makeVirtualRangeScan(scan, simulator.rig, 5.0);
-      sensed.timestamp = rig_frame.timestamp;
-      robot.setSensedObstacles(sensed, blindColumnPoints(scan, simulator.rig, config.explorer.robot_radius_m),
-                               robot.pose());
+      robot.setSensedScan(mapper.disparityScan().scan, simulator.rig, config.explorer.robot_radius_m, 5.0,
+                          rig_frame.timestamp, robot.pose());
     }
     guard.readScan(robot, robot.pose(), simulation.time(), nullptr);
     const VelocityCommand command = guard.guard({0.5, 0.0}, robot.pose());
