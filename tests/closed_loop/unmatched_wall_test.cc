@@ -119,10 +119,9 @@ TEST(UnmatchedWallTest, TheExplorerStopsShortOfAFlatPaintedWall) {
 }
 
 // The explorer's guard, fed what the head senses (CSimulatedRobotInterface::setSensedScan, as
-// exploration_run.cc feeds it), holds a robot told to drive at 0.5 m/s straight at the painted
-// wall from `start_x` for 4 s. Returns the collisions.
-int collisionsDrivingAtThePaint(const ExplorationConfig& config, double start_x) {
-  const World world = corridorFrom(start_x);
+// exploration_run.cc feeds it), holds a robot told to drive at 0.5 m/s straight ahead from the
+// world's start for 4 s. Returns the collisions.
+int collisionsDrivingAt(const World& world, const ExplorationConfig& config) {
   const SimulatorConfig& simulator = config.simulator;
   Simulation simulation(world, simulator.rig, simulator.sensor, simulator.robot, simulator.simulation);
   CSimulatedRobotInterface robot(simulation, MapPoseSource::kGroundTruth);
@@ -149,9 +148,20 @@ TEST(UnmatchedWallTest, TheGuardHoldsTheRobotBeforeAPaintedWallNearerThanTheFloo
   constexpr double kStartX = kEndWallFace - 0.6;
   ExplorationConfig config = loadExplorationConfig(testing::shippedExplorationConfigPath());
   config.mapping.projection.near_floor_m = 0.3;
-  EXPECT_EQ(collisionsDrivingAtThePaint(config, kStartX), 0);
+  EXPECT_EQ(collisionsDrivingAt(corridorFrom(kStartX), config), 0);
   config.mapping.projection.near_floor_m = 0.0;
-  EXPECT_GT(collisionsDrivingAtThePaint(config, kStartX), 0);
+  EXPECT_GT(collisionsDrivingAt(corridorFrom(kStartX), config), 0);
+}
+
+// From 1.2 m the camera sees the floor (from 0.82 m ahead of the robot's centre) up to the paint,
+// and nothing of the paint: where the floor ends is the only sign of it.
+TEST(UnmatchedWallTest, TheGuardStopsShortOfThePaintsFootWhereTheFloorEnds) {
+  constexpr double kStartX = kEndWallFace - 1.2;
+  ExplorationConfig config = loadExplorationConfig(testing::shippedExplorationConfigPath());
+  config.mapping.projection.floor_end_clear_max_depth_m = 4.0;  // as ini/explore_320x240.ini
+  EXPECT_EQ(collisionsDrivingAt(corridorFrom(kStartX), config), 0);
+  config.mapping.projection.floor_end_clear_max_depth_m = 0.0;
+  EXPECT_GT(collisionsDrivingAt(corridorFrom(kStartX), config), 0);
 }
 
 }  // namespace
