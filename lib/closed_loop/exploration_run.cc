@@ -11,8 +11,6 @@
 
 #include "closed_loop/navigation_trace.h"
 #include "closed_loop/simulated_robot_interface.h"
-#include "column_projection/blind_column_points.h"
-#include "column_projection/virtual_range_scan.h"
 #include "common/atomic_file.h"
 #include "common/image_file.h"
 #include "evaluation/trajectory_error.h"
@@ -121,10 +119,8 @@ class ClosedLoopMapper {
     const mrpt::poses::CPose2D map_pose = robot_interface_.pose();
     mapper_.insertLastObservation(map_pose);
     const DisparityScan& scan = mapper_.disparityScan().scan;
-    mrpt::obs::CObservation2DRangeScan sensed = makeVirtualRangeScan(scan, config_.simulator.rig, kSensedRangeM);
-    sensed.timestamp = rig_frame.timestamp;
-    robot_interface_.setSensedObstacles(
-        sensed, blindColumnPoints(scan, config_.simulator.rig, config_.explorer.robot_radius_m), map_pose);
+    robot_interface_.setSensedScan(scan, config_.simulator.rig, config_.explorer.robot_radius_m, kSensedRangeM,
+                                   rig_frame.timestamp, map_pose);
     explorer_.updateMap(grid(), map_pose);
     return map_pose;
   }

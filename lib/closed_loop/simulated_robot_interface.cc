@@ -4,7 +4,12 @@
 
 #include <cmath>
 
+#include "column_projection/blind_column_points.h"
+#include "column_projection/unmatched_foot_points.h"
+#include "column_projection/virtual_range_scan.h"
+
 namespace stereonav {
+
 CSimulatedRobotInterface::CSimulatedRobotInterface(const Simulation& simulation, MapPoseSource pose_source)
     : simulation_(simulation), pose_source_(pose_source) {}
 
@@ -56,16 +61,19 @@ bool CSimulatedRobotInterface::stop(bool /*is_emergency_stop*/) {
   return true;
 }
 
-void CSimulatedRobotInterface::setSensedObstacles(const mrpt::obs::CObservation2DRangeScan& scan,
-                                                  const std::vector<mrpt::math::TPoint2D>& blind_points,
-                                                  const mrpt::poses::CPose2D& pose) {
+void CSimulatedRobotInterface::setSensedScan(const DisparityScan& scan, const CameraRig& rig, double body_radius_m,
+                                             double max_range_m, mrpt::system::TTimeStamp timestamp,
+                                             const mrpt::poses::CPose2D& pose) {
   scan_points_.clear();
-  scan_points_.loadFromRangeScan(scan);
-  for (const mrpt::math::TPoint2D& point : blind_points) {
-    scan_points_.insertPoint(static_cast<float>(point.x), static_cast<float>(point.y), 0.0f);
+  mrpt::obs::CObservation2DRangeScan range_scan = makeVirtualRangeScan(scan, rig, max_range_m);
+  scan_points_.loadFromRangeScan(range_scan);
+  for (const auto& points : {blindColumnPoints(scan, rig, body_radius_m), unmatchedFootPoints(scan, rig)}) {
+    for (const mrpt::math::TPoint2D& point : points) {
+      scan_points_.insertPoint(static_cast<float>(point.x), static_cast<float>(point.y), 0.0f);
+    }
   }
   scan_pose_ = pose;
-  scan_time_ = scan.timestamp;
+  scan_time_ = timestamp;
   has_scan_ = true;
 }
 

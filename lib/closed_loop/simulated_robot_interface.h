@@ -7,7 +7,9 @@
 
 #include <vector>
 
+#include "column_projection/disparity_scan.h"
 #include "mapping/rawlog_mapping.h"
+#include "rig/camera_rig.h"
 #include "simulator/simulation.h"
 
 namespace stereonav {
@@ -31,12 +33,13 @@ class CSimulatedRobotInterface : public mrpt::nav::CRobot2NavInterface {
   // Localized only: the localizer put the robot at `pose` when its odometry read `odometry`.
   void setLocalizedPose(const mrpt::poses::CPose2D& pose, const mrpt::poses::CPose2D& odometry);
 
-  // The newest stereo scan as a virtual laser scan (robot frame, column_projection/
-  // virtual_range_scan.h) and its blind columns' points (column_projection/blind_column_points.h),
-  // taken with the robot at pose() == `pose`: what senseObstacles reports until the next one, as
-  // the driver of a robot carrying the stereo head would.
-  void setSensedObstacles(const mrpt::obs::CObservation2DRangeScan& scan,
-                          const std::vector<mrpt::math::TPoint2D>& blind_points, const mrpt::poses::CPose2D& pose);
+  // What the driver of a robot carrying the stereo head reports (senseObstacles) from the newest
+  // disparity scan, taken with the robot at pose() == `pose`, until the next one: the virtual
+  // laser scan's obstacles within max_range_m (column_projection/virtual_range_scan.h) and what
+  // its readings miss: the blind columns' points for a body of radius body_radius_m
+  // (blind_column_points.h) and the feet of surfaces that matched nothing (unmatched_foot_points.h).
+  void setSensedScan(const DisparityScan& scan, const CameraRig& rig, double body_radius_m, double max_range_m,
+                     mrpt::system::TTimeStamp timestamp, const mrpt::poses::CPose2D& pose);
 
   bool getCurrentPoseAndSpeeds(mrpt::math::TPose2D& pose, mrpt::math::TTwist2D& velocity_global,
                                mrpt::system::TTimeStamp& timestamp, mrpt::math::TPose2D& odometry,

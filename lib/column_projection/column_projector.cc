@@ -154,9 +154,9 @@ DisparityScan ColumnProjector::project(const cv::Mat1f& disparity) const {
     for (int x = 0; x < width; ++x) {
       float foot = 0.0f;
       int foot_row = -1;
-      // Only a reading beyond the foot has CLEAR to cut; a column without one has none.
-      if (best_row[x] >= 0 && unmatchedFoot(disparity, x, clear_end_min_disparity_, foot, foot_row) &&
-          best[x] < foot - 0.5f) {
+      // A reading at the foot or nearer is what the column sees; one beyond it has CLEAR to cut.
+      if (unmatchedFoot(disparity, x, clear_end_min_disparity_, foot, foot_row) &&
+          (best_row[x] < 0 || best[x] < foot - 0.5f)) {
         scan.column_clear_end[x] = foot;
         scan.column_clear_end_row[x] = foot_row;
       }

@@ -23,9 +23,10 @@ struct DisparityScan {
   // that floor, the matcher could not see. Empty when not checked.
   std::vector<unsigned char> column_blind;
   // Per column, the disparity and image row of the floor's end where it is the foot of a surface
-  // that matched nothing, nearer than the column's reading (ProjectionOptions::
-  // floor_end_clear_max_depth_m): the floor up to it was seen, what lies beyond it was not, so the
-  // reading's CLEAR stops there. kInvalidDisparity where none; empty when not checked.
+  // that matched nothing, nearer than the column's reading if it has one (ProjectionOptions::
+  // floor_end_clear_max_depth_m): the floor up to it was seen, what lies beyond it was not, so a
+  // reading's CLEAR stops there, and a guard stops short of it (unmatched_foot_points.h).
+  // kInvalidDisparity where none; empty when not checked.
   std::vector<float> column_clear_end;
   std::vector<int> column_clear_end_row;
 

@@ -29,11 +29,12 @@ struct ProjectionOptions {
   // floor's texture fades below what the matcher finds, and its end is no foot. 0 = off (the
   // paper's projection).
   double floor_end_max_depth_m = 0.0;
-  // The same foot, nearer than this depth, with a reading beyond it: the reading is kept, but its
-  // CLEAR stops at the foot (DisparityScan::column_clear_end). A window-based matcher gives the
-  // pixels of a flat-painted wall next to a textured surface far behind it that surface's
-  // disparity (the window holds only its texture), so the column reads far and its CLEAR runs
-  // through the wall; its floor, though, ends at the wall. 0 = off.
+  // The same foot, nearer than this depth, in a column with a reading beyond it or with none
+  // (DisparityScan::column_clear_end): a reading is kept, but its CLEAR stops at the foot, and the
+  // explorer's guard stops short of the foot (unmatched_foot_points.h). A window-based matcher
+  // gives the pixels of a flat-painted wall next to a textured surface far behind it that
+  // surface's disparity (the window holds only its texture), so the column reads far and its
+  // CLEAR runs through the wall; its floor, though, ends at the wall. 0 = off.
   double floor_end_clear_max_depth_m = 0.0;
   // Below the nearest floor the camera can see, it sees nothing; a surface the matcher cannot
   // match (flat paint, or one nearer than the largest disparity searched) standing there fills

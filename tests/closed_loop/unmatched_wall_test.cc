@@ -14,8 +14,6 @@
 
 #include "closed_loop/exploration_run.h"
 #include "closed_loop/simulated_robot_interface.h"
-#include "column_projection/blind_column_points.h"
-#include "column_projection/virtual_range_scan.h"
 #include "explorer/safety_guard.h"
 #include "mapping/map_outputs.h"
 #include "mapping/stereo_mapper.h"
@@ -120,11 +118,10 @@ TEST(UnmatchedWallTest, TheExplorerStopsShortOfAFlatPaintedWall) {
   expectStopsShortOfThePaintedWall(config, "corridor_floor_end");
 }
 
-// The explorer's guard, fed what the head senses (the virtual scan and the blind columns' points,
-// as exploration_run.cc feeds it), holds a robot told to drive at 0.5 m/s straight at the painted
-// wall from `start_x` for 4 s. Returns the collisions.
-int collisionsDrivingAtThePaint(const ExplorationConfig& config, double start_x) {
-  const World world = corridorFrom(start_x);
+// The explorer's guard, fed what the head senses (CSimulatedRobotInterface::setSensedScan, as
+// exploration_run.cc feeds it), holds a robot told to drive at 0.5 m/s straight ahead from the
+// world's start for 4 s. Returns the collisions.
+int collisionsDrivingAt(const World& world, const ExplorationConfig& config) {
   const SimulatorConfig& simulator = config.simulator;
   Simulation simulation(world, simulator.rig, simulator.sensor, simulator.robot, simulator.simulation);
   CSimulatedRobotInterface robot(simulation, MapPoseSource::kGroundTruth);
@@ -135,11 +132,8 @@ int collisionsDrivingAtThePaint(const ExplorationConfig& config, double start_x)
       const SimulatedFrame frame = simulation.renderFrame();
       const RigFrame rig_frame = rigFrameOf(frame, simulator.rig);
       mapper.process(rig_frame, frame.odometry);
-      const DisparityScan& scan = mapper.disparityScan().scan;
-      mrpt::obs::CObservation2DRangeScan sensed = makeVirtualRangeScan(scan, simulator.rig, 5.0);
-      sensed.timestamp = rig_frame.timestamp;
-      robot.setSensedObstacles(sensed, blindColumnPoints(scan, simulator.rig, config.explorer.robot_radius_m),
-                               robot.pose());
+      robot.setSensedScan(mapper.disparityScan().scan, simulator.rig, config.explorer.robot_radius_m, 5.0,
+                          rig_frame.timestamp, robot.pose());
     }
     guard.readScan(robot, robot.pose(), simulation.time(), nullptr);
     const VelocityCommand command = guard.guard({0.5, 0.0}, robot.pose());
@@ -154,9 +148,20 @@ TEST(UnmatchedWallTest, TheGuardHoldsTheRobotBeforeAPaintedWallNearerThanTheFloo
   constexpr double kStartX = kEndWallFace - 0.6;
   ExplorationConfig config = loadExplorationConfig(testing::shippedExplorationConfigPath());
   config.mapping.projection.near_floor_m = 0.3;
-  EXPECT_EQ(collisionsDrivingAtThePaint(config, kStartX), 0);
+  EXPECT_EQ(collisionsDrivingAt(corridorFrom(kStartX), config), 0);
   config.mapping.projection.near_floor_m = 0.0;
-  EXPECT_GT(collisionsDrivingAtThePaint(config, kStartX), 0);
+  EXPECT_GT(collisionsDrivingAt(corridorFrom(kStartX), config), 0);
+}
+
+// From 1.2 m the camera sees the floor (from 0.82 m ahead of the robot's centre) up to the paint,
+// and nothing of the paint: where the floor ends is the only sign of it.
+TEST(UnmatchedWallTest, TheGuardStopsShortOfThePaintsFootWhereTheFloorEnds) {
+  constexpr double kStartX = kEndWallFace - 1.2;
+  ExplorationConfig config = loadExplorationConfig(testing::shippedExplorationConfigPath());
+  config.mapping.projection.floor_end_clear_max_depth_m = 4.0;  // as ini/explore_320x240.ini
+  EXPECT_EQ(collisionsDrivingAt(corridorFrom(kStartX), config), 0);
+  config.mapping.projection.floor_end_clear_max_depth_m = 0.0;
+  EXPECT_GT(collisionsDrivingAt(corridorFrom(kStartX), config), 0);
 }
 
 }  // namespace

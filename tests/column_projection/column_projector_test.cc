@@ -223,8 +223,8 @@ TEST(ColumnProjectorTest, AFloorEndBeforeTheReadingEndsItsClear) {
 TEST(ColumnProjectorTest, AFarGhostOnAnUnmatchedWallKeepsItsClearToTheWallsFoot) {
   // The flat-painted wall at Z = 2 m (foot at row 75, d = 5), a few of its pixels in column 20
   // matched at d = 2 (a textured surface far behind, in the window of pixels beside it): the
-  // reading is that ghost, 5 m deep, but its CLEAR stops at the wall's foot. Without a reading
-  // (column 30) there is no CLEAR to end.
+  // reading is that ghost, 5 m deep, but its CLEAR stops at the wall's foot. A column without a
+  // reading (30) has its foot all the same: the guard stops short of it.
   const CameraRig rig = testRig(0, 0, 0, 0);
   cv::Mat1f disparity = unmatchedWallCorridor();
   disparity(cv::Rect(20, 45, 1, 3)).setTo(2.0f);  // 0.65-0.75 m high at Z = 5 m
@@ -233,7 +233,8 @@ TEST(ColumnProjectorTest, AFarGhostOnAnUnmatchedWallKeepsItsClearToTheWallsFoot)
   EXPECT_FLOAT_EQ(scan.column_clear_end[20], 5.0f);
   EXPECT_EQ(scan.column_clear_end_row[20], 75);
   EXPECT_FALSE(scan.valid(30));
-  EXPECT_FALSE(scan.endsClear(30));
+  EXPECT_TRUE(scan.endsClear(30));
+  EXPECT_FLOAT_EQ(scan.column_clear_end[30], 5.0f);
 }
 
 // In levelCorridor() the nearest floor the camera sees is the bottom row's, Z = 50 / (100 - 50)
