@@ -65,7 +65,7 @@ void CSimulatedRobotInterface::setSensedScan(const DisparityScan& scan, const Ca
                                              double max_range_m, mrpt::system::TTimeStamp timestamp,
                                              const mrpt::poses::CPose2D& pose) {
   scan_points_.clear();
-  mrpt::obs::CObservation2DRangeScan range_scan = makeVirtualRangeScan(scan, rig, max_range_m);
+  const mrpt::obs::CObservation2DRangeScan range_scan = makeVirtualRangeScan(scan, rig, max_range_m);
   scan_points_.loadFromRangeScan(range_scan);
   for (const auto& points : {blindColumnPoints(scan, rig, body_radius_m), unmatchedFootPoints(scan, rig)}) {
     for (const mrpt::math::TPoint2D& point : points) {

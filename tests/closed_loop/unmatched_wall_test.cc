@@ -1,7 +1,7 @@
 // A wall in flat paint has nothing for stereo to match (issue 18): the map and the guard know it
-// only from the textured floor's end at its foot (ProjectionOptions::floor_end_max_depth_m), or,
-// nearer than the floor the camera can see, from the floor missing from the image's bottom rows
-// (ProjectionOptions::near_floor_m).
+// only from the textured floor's end at its foot (ProjectionOptions::floor_end_max_depth_m as a
+// reading, floor_end_clear_max_depth_m for the guard), or, nearer than the floor the camera can
+// see, from the floor missing from the image's bottom rows (ProjectionOptions::near_floor_m).
 #include <mrpt/config/CConfigFileMemory.h>
 
 #include <gtest/gtest.h>
