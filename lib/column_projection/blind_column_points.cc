@@ -17,12 +17,10 @@ std::vector<mrpt::math::TPoint2D> blindColumnPoints(const DisparityScan& scan, c
   int ahead = 0;
   for (int column = 0; column < scan.columns(); ++column) {
     // The ray through the column's bottom pixel, the one that meets the nearest floor.
+    const auto floor = rig.floorPointOnRobot(column, rig.reference.height - 1);
+    if (!floor || std::abs(floor->y) > body_radius_m) continue;
     const mrpt::math::TVector3D ray = rig.rayOnRobot(column, rig.reference.height - 1);
     double dx = ray.x, dy = ray.y;
-    const double dz = ray.z;
-    if (dz >= 0.0 || sensor.z <= 0.0) continue;  // it meets no floor
-    const double to_floor = -sensor.z / dz;
-    if (std::abs(sensor.y + to_floor * dy) > body_radius_m) continue;
     ++ahead;
     if (!scan.blind(column)) continue;
     const double norm = std::hypot(dx, dy);

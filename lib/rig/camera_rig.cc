@@ -16,6 +16,14 @@ mrpt::math::TVector3D CameraRig::rayOnRobot(double x, double y) const {
           rotation(2, 0) * u + rotation(2, 1) * v + rotation(2, 2)};
 }
 
+std::optional<mrpt::math::TPoint2D> CameraRig::floorPointOnRobot(double x, double y) const {
+  const mrpt::math::TVector3D ray = rayOnRobot(x, y);
+  const auto sensor = pose_on_robot.translation();
+  if (ray.z >= 0.0 || sensor.z <= 0.0) return std::nullopt;
+  const double depth = -sensor.z / ray.z;
+  return mrpt::math::TPoint2D(sensor.x + depth * ray.x, sensor.y + depth * ray.y);
+}
+
 mrpt::poses::CPose3D CameraRig::opticalPoseOnRobot(double x, double y, double z, double yaw,
                                                    double tilt_down) {
   // Robot frame to a forward-looking optical frame: z_cam = x_robot, x_cam = -y_robot,

@@ -1,8 +1,10 @@
 #pragma once
 
+#include <mrpt/math/TPoint2D.h>
 #include <mrpt/math/TPoint3D.h>
 #include <mrpt/poses/CPose3D.h>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -56,6 +58,9 @@ struct CameraRig {
   // depth along the optical axis: the robot-frame offset from the camera of the point seen
   // there at depth Z is Z times this.
   mrpt::math::TVector3D rayOnRobot(double x, double y) const;
+  // Where that ray meets the floor (z = 0), robot frame; nullopt if it never does (level or
+  // looking up, or a camera at or below the floor).
+  std::optional<mrpt::math::TPoint2D> floorPointOnRobot(double x, double y) const;
 
   // The optical-frame pose of a camera mounted at (x, y, z) on the robot, turned left by `yaw`
   // and pitched down by `tilt_down` (radians), as a person measures it on the robot.
