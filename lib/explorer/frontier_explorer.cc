@@ -216,6 +216,15 @@ VelocityCommand FrontierExplorer::escape(const mrpt::poses::CPose2D& pose, int c
     if (!escape_to_) {
       failed_escapes_.clear();
       if (!motion_.lookedAroundHere()) return lookAround(pose);
+      if (relaxation_ == Relaxation::kNone && options_.safety_margin_m > 0.0) {
+        // Nowhere near keeps the margin, as at a start in a narrow passage whose walls stereo
+        // cannot match: what the look around mapped free is a few narrow wedges. Try where the
+        // bare body fits, as when no frontier is reachable (recoverUnreachable); the guard
+        // keeps it off what the scans show.
+        relaxation_ = Relaxation::kBareBody;
+        replan();
+        return {};
+      }
       finish("boxed in: no cell within " + metres(options_.escape_search_m) +
              " m where the robot's body fits in known free space");
       return {};

@@ -109,6 +109,27 @@ TEST(FrontierExplorerTest, LooksAroundOnceThenStopsWhenNoFrontierIsLeftAndSaysWh
   EXPECT_EQ(robot.speed_, 0.0);
 }
 
+TEST(FrontierExplorerTest, WhereNoCellNearKeepsTheMarginItTriesTheBareBodyBeforeGivingUp) {
+  // All it knows is a strip of free floor 0.7 m wide (y 1.7 .. 2.4), unknown all round, as at a
+  // start between walls stereo cannot match. The strip's middle row is 0.35 m from the unknown:
+  // the bare body (0.3) fits there, the margin (0.4) nowhere. It looks around, then drives on
+  // the bare body rather than stopping boxed in.
+  TestGrid cells(60, 40);
+  cells.free(5, 17, 40, 23);
+  FrontierExplorer explorer(testOptions());
+  KinematicRobot robot({2.0, 2.05, 0.0});
+  double farthest = 0.0;
+  for (int steps = 0; steps < 1200 && !explorer.finished(); ++steps) {
+    if (steps % 4 == 0) explorer.updateMap(cells.grid(), mrpt::poses::CPose2D(robot.pose_));  // 5 Hz
+    if (!explorer.controlStep(robot)) break;
+    robot.step(0.05);
+    farthest = std::max(farthest, std::abs(robot.pose_.x - 2.0));
+  }
+  EXPECT_EQ(explorer.stopReason().find("boxed in"), std::string::npos) << explorer.stopReason();
+  EXPECT_GT(farthest, 1.0);
+  EXPECT_GE(robot.turned_, 2.0 * M_PI - 0.1);  // the look around came first
+}
+
 // Walled area, east wall at x = 5.0 with a 0.5 m door (the bare body needs 0.7 m of free cells),
 // a walled passage beyond it to x = 6.1, then unknown: the frontier (x = 6.05) is 1.4 m past the
 // last cell where the body fits (x = 4.65, 0.35 m from the wall's cells).
