@@ -19,10 +19,10 @@ std::vector<mrpt::math::TPoint2D> blindColumnPoints(const DisparityScan& scan, c
     // The ray through the column's bottom pixel, the one that meets the nearest floor.
     const auto floor = rig.floorPointOnRobot(column, rig.reference.height - 1);
     if (!floor || std::abs(floor->y) > body_radius_m) continue;
-    const mrpt::math::TVector3D ray = rig.rayOnRobot(column, rig.reference.height - 1);
-    double dx = ray.x, dy = ray.y;
     ++ahead;
     if (!scan.blind(column)) continue;
+    // The floor point's bearing from the sensor is the ray's.
+    double dx = floor->x - sensor.x, dy = floor->y - sensor.y;
     const double norm = std::hypot(dx, dy);
     if (norm == 0.0) continue;
     dx /= norm;

@@ -216,15 +216,9 @@ VelocityCommand FrontierExplorer::escape(const mrpt::poses::CPose2D& pose, int c
     if (!escape_to_) {
       failed_escapes_.clear();
       if (!motion_.lookedAroundHere()) return lookAround(pose);
-      if (relaxation_ == Relaxation::kNone && options_.safety_margin_m > 0.0) {
-        // Nowhere near keeps the margin, as at a start in a narrow passage whose walls stereo
-        // cannot match: what the look around mapped free is a few narrow wedges. Try where the
-        // bare body fits, as when no frontier is reachable (recoverUnreachable); the guard
-        // keeps it off what the scans show.
-        relaxation_ = Relaxation::kBareBody;
-        replan();
-        return {};
-      }
+      // Nowhere near keeps the margin, as at a start in a narrow passage whose walls stereo
+      // cannot match: what the look around mapped free is a few narrow wedges.
+      if (relaxToBareBody()) return {};
       finish("boxed in: no cell within " + metres(options_.escape_search_m) +
              " m where the robot's body fits in known free space");
       return {};
@@ -232,6 +226,13 @@ VelocityCommand FrontierExplorer::escape(const mrpt::poses::CPose2D& pose, int c
     status_.phase = ExplorerPhase::kEscaping;
   }
   return motion_.approach(pose, *escape_to_);
+}
+
+bool FrontierExplorer::relaxToBareBody() {
+  if (relaxation_ != Relaxation::kNone || options_.safety_margin_m <= 0.0) return false;
+  relaxation_ = Relaxation::kBareBody;
+  replan();
+  return true;
 }
 
 VelocityCommand FrontierExplorer::recoverUnreachable(const mrpt::poses::CPose2D& pose, double time_s) {
@@ -251,12 +252,9 @@ VelocityCommand FrontierExplorer::recoverUnreachable(const mrpt::poses::CPose2D&
     forgot_x_ = pose.x();
     forgot_y_ = pose.y();
     awaiting_map_ = true;
-  } else if (relaxation_ == Relaxation::kNone && options_.safety_margin_m > 0.0) {
+  } else if (relaxToBareBody()) {
     // Doors seen obliquely come out narrower than they are (their jambs' regions of
-    // uncertainty, paper section 3.2): try the gaps the bare body fits through; the guard
-    // still keeps it off what the scans show. Until the next frontier is reached.
-    relaxation_ = Relaxation::kBareBody;
-    replan();
+    // uncertainty, paper section 3.2).
   } else if (relaxation_ < Relaxation::kBareBodyPastSpecks) {
     // Boxed in by specks: lone obstacle cells amid free space, each inflated by the body's
     // radius, in the gaps beside furniture. Up close they are below the cameras' view, so no

@@ -72,6 +72,10 @@ class FrontierExplorer {
                           mrpt::nav::CRobot2NavInterface& robot);
   VelocityCommand decide(const mrpt::poses::CPose2D& pose, double time_s);
   VelocityCommand escape(const mrpt::poses::CPose2D& pose, int col, int row);
+  // Plans where the bare body fits, without the safety margin, until the next frontier is
+  // reached; the guard still keeps the robot off what the scans show. False when planning is
+  // relaxed already or there is no margin to drop.
+  bool relaxToBareBody();
   VelocityCommand recoverUnreachable(const mrpt::poses::CPose2D& pose, double time_s);
   VelocityCommand lookAtFrontier(const mrpt::poses::CPose2D& pose, int col, int row, double time_s);
   VelocityCommand lookAround(const mrpt::poses::CPose2D& pose);
