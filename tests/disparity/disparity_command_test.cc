@@ -15,6 +15,7 @@
 #include "disparity/disparity_evaluation.h"
 #include "disparity/disparity_image.h"
 #include "disparity/disparity_io.h"
+#include "support/scratch_directory.h"
 
 namespace stereonav {
 namespace {
@@ -29,15 +30,11 @@ struct CommandResult {
 class DisparityCommandTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    directory_ = std::filesystem::temp_directory_path() /
-                 ("stereonav_disparity_command_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    std::filesystem::create_directories(directory_);
     std::ofstream(path("stereo.ini")) << "# tsukuba: disparities 5..14\n[stereo]\nmax_disparity = 15\n"
                                          "uniqueness_threshold = 0.04\n";
   }
-  void TearDown() override { std::filesystem::remove_all(directory_); }
 
-  std::string path(const std::string& name) const { return (directory_ / name).string(); }
+  std::string path(const std::string& name) const { return scratch_.file(name); }
 
   CommandResult run(const std::string& arguments) const {
     const std::string log = path("log.txt");
@@ -63,7 +60,7 @@ class DisparityCommandTest : public ::testing::Test {
     EXPECT_FALSE(std::filesystem::exists(path("out.pfm")));
   }
 
-  std::filesystem::path directory_;
+  test_support::ScratchDirectory scratch_;
 };
 
 TEST_F(DisparityCommandTest, MultiBaselineWritesPfmColourAndScores) {

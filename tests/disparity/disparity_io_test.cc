@@ -8,6 +8,7 @@
 #include <fstream>
 
 #include "disparity/disparity_image.h"
+#include "support/scratch_directory.h"
 
 namespace stereonav {
 namespace {
@@ -15,19 +16,14 @@ namespace {
 class DisparityIoTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    directory_ = std::filesystem::temp_directory_path() /
-                 ("stereonav_disparity_io_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "_" +
-                  ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    std::filesystem::create_directories(directory_);
     disparity_ = cv::Mat1f(3, 4);
     disparity_ << 0.0f, 1.5f, 12.25f, kInvalidDisparity,  //
         7.0f, kInvalidDisparity, 100.0f, 0.5f,             //
         3.125f, 2.0f, 1.0f, 255.0f;
   }
-  void TearDown() override { std::filesystem::remove_all(directory_); }
-  std::string path(const std::string& name) const { return (directory_ / name).string(); }
+  std::string path(const std::string& name) const { return scratch_.file(name); }
 
-  std::filesystem::path directory_;
+  test_support::ScratchDirectory scratch_;
   cv::Mat1f disparity_;
 };
 

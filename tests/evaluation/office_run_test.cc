@@ -2,9 +2,7 @@
 // configuration, scored against the simulator's true map.
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
-#include <filesystem>
 #include <iostream>
 
 #include "evaluation/map_score.h"
@@ -12,26 +10,15 @@
 #include "evaluation/trajectory_error.h"
 #include "mapping/mapping_options.h"
 #include "mapping/rawlog_mapping.h"
+#include "support/scratch_directory.h"
 
 namespace stereonav {
 namespace {
-
-namespace fs = std::filesystem;
 
 const std::string kSourceDir = STEREONAV_SOURCE_DIR;
 
 class OfficeRunTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    // One directory per test and process: ctest runs these tests as parallel processes, and gtest's
-    // random seed, which named it before, can be the same in two of them; one's TearDown then
-    // removed the other's outputs while it wrote them (seen once in CI).
-    directory_ = fs::temp_directory_path() /
-                 ("office_run_test_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
-                  "_" + std::to_string(::getpid()));
-    fs::create_directories(directory_);
-  }
-  void TearDown() override { fs::remove_all(directory_); }
 
   // Maps the run with ini/office_run.ini changed by `adjust`, and scores the map.
   template <typename Adjust>
@@ -40,7 +27,7 @@ class OfficeRunTest : public ::testing::Test {
     adjust(options);
     MappingJob job;
     job.rawlog_path = kSourceDir + "/rawlogs/office_run.rawlog";
-    job.output_prefix = (directory_ / "office").string();
+    job.output_prefix = scratch_.file("office");
     job.pose_source = poses;
     job.ground_truth_poses = loadPoseList(kSourceDir + "/rawlogs/office_run.gt.txt");
     const MappingReport report = mapRawlog(options, job);
@@ -56,7 +43,7 @@ class OfficeRunTest : public ::testing::Test {
                     loadRosMap(kSourceDir + "/rawlogs/office_run.truth.yaml"), score_options);
   }
 
-  fs::path directory_;
+  test_support::ScratchDirectory scratch_;
   std::vector<mrpt::poses::CPose2D> last_path_;
 };
 

@@ -5,30 +5,21 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include <cstdio>
-#include <filesystem>
 #include <fstream>
 #include <stdexcept>
 
 #include "simulator/ground_truth_map.h"
 #include "simulator/world_loader.h"
+#include "support/scratch_directory.h"
 
 namespace stereonav {
 namespace {
 
-namespace fs = std::filesystem;
-
 class RosMapTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    directory_ = fs::temp_directory_path() /
-                 ("ros_map_test_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "_" +
-                  ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(directory_);
-  }
-  void TearDown() override { fs::remove_all(directory_); }
 
   std::string writeYaml(const std::string& text) {
-    const std::string path = (directory_ / "map.yaml").string();
+    const std::string path = scratch_.file("map.yaml");
     std::ofstream(path) << text;
     return path;
   }
@@ -36,10 +27,10 @@ class RosMapTest : public ::testing::Test {
   // A 3 x 2 image, top row first: black, mid grey 128, white; grey 60, 205, 230.
   void writeImage() {
     cv::Mat1b image = (cv::Mat1b(2, 3) << 0, 128, 255, 60, 205, 230);
-    cv::imwrite((directory_ / "map.pgm").string(), image);
+    cv::imwrite(scratch_.file("map.pgm"), image);
   }
 
-  fs::path directory_;
+  test_support::ScratchDirectory scratch_;
 };
 
 TEST_F(RosMapTest, ClassifiesPixelsByTheYamlsThresholdsWithTheImageTopAtMaxY) {
@@ -96,13 +87,13 @@ TEST_F(RosMapTest, BadInputNamesTheFileAndTheKey) {
   EXPECT_NE(message("image: nothere.pgm\nresolution: 1\norigin: [0, 0, 0]\n").find("nothere.pgm"),
             std::string::npos);
   EXPECT_NE(message("image: map.pgm\nresolution: 1\norigin: [0, 0, 0]\n").find("no error"), std::string::npos);
-  EXPECT_THROW(loadRosMap((directory_ / "absent.yaml").string()), std::runtime_error);
+  EXPECT_THROW(loadRosMap(scratch_.file("absent.yaml")), std::runtime_error);
 }
 
 TEST_F(RosMapTest, ReadsTheSimulatorsGroundTruthMapCellForCell) {
   const World world = loadWorld(std::string(STEREONAV_SOURCE_DIR) + "/ini/worlds/table_room.ini");
   const GroundTruthMap truth(world, GroundTruthMapOptions{});
-  const std::string yaml = (directory_ / "truth.yaml").string();
+  const std::string yaml = scratch_.file("truth.yaml");
   truth.writeRosMap(yaml);
   const RosMap map = loadRosMap(yaml);
   ASSERT_EQ(map.width(), truth.width());

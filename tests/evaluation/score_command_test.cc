@@ -4,11 +4,12 @@
 
 #include <algorithm>
 #include <cstdlib>
-#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
+
+#include "support/scratch_directory.h"
 
 namespace stereonav {
 namespace {
@@ -22,15 +23,7 @@ struct CommandResult {
 
 class ScoreCommandTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    directory_ = std::filesystem::temp_directory_path() /
-                 ("stereonav_score_command_" +
-                  std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    std::filesystem::create_directories(directory_);
-  }
-  void TearDown() override { std::filesystem::remove_all(directory_); }
-
-  std::string path(const std::string& name) const { return (directory_ / name).string(); }
+  std::string path(const std::string& name) const { return scratch_.file(name); }
 
   CommandResult run(const std::string& arguments) const {
     const std::string log = path("log.txt");
@@ -42,7 +35,7 @@ class ScoreCommandTest : public ::testing::Test {
     return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output.str()};
   }
 
-  std::filesystem::path directory_;
+  test_support::ScratchDirectory scratch_;
 };
 
 TEST_F(ScoreCommandTest, TheTruthScoresPerfectlyAgainstItself) {

@@ -3,25 +3,18 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <filesystem>
 #include <fstream>
+
+#include "support/scratch_directory.h"
 
 namespace stereonav {
 namespace {
 
-namespace fs = std::filesystem;
-
 class TumTrajectoryTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    directory_ = fs::temp_directory_path() /
-                 ("tum_trajectory_test_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()));
-    fs::create_directories(directory_);
-  }
-  void TearDown() override { fs::remove_all(directory_); }
-  std::string path(const std::string& name) const { return (directory_ / name).string(); }
+  std::string path(const std::string& name) const { return scratch_.file(name); }
 
-  fs::path directory_;
+  test_support::ScratchDirectory scratch_;
 };
 
 TEST_F(TumTrajectoryTest, WritesTheTumFormatAndReadsItBack) {

@@ -128,7 +128,7 @@ TEST(CameraImagePairingTest, IniKeys) {
 TEST(CameraImagePairingTest, RawlogOfSeparateImagesReadsAsFrames) {
   // A binocular head recorded as rawlog-grabber does with two cameras: one CObservationImage
   // each, the right one 2 ms late and missing frame 2, odometry before every frame.
-  ScratchDirectory scratch;
+  test_support::ScratchDirectory scratch;
   const std::string path = scratch.file("separate.rawlog");
   const CameraRig rig = binocularRig();
   const std::vector<RigFrame> frames = sampleFrames(rig, 5);

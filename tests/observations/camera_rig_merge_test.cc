@@ -79,7 +79,7 @@ TEST(CameraRigMergeTest, DifferentCamerasAreReported) {
 
 TEST(CameraRigMergeTest, IniRigAgainstARecordedRawlog) {
   // The whole path a mapper takes: [rig] from the ini, the rig recorded with the first frame.
-  ScratchDirectory scratch;
+  test_support::ScratchDirectory scratch;
   const std::string path = scratch.file("recorded.rawlog");
   {
     RawlogWriter writer(path, {});

@@ -28,7 +28,7 @@ TEST(DatasetConversionTest, EurocClipBecomesARawPairThatIsRectifiedWhenRead) {
   if (!std::filesystem::exists(kEuroc + "/cam0/data.csv")) {
     GTEST_SKIP() << kEuroc << " is absent (EuRoC data are read from ../shared/data, not shipped)";
   }
-  ScratchDirectory scratch;
+  test_support::ScratchDirectory scratch;
   const std::string path = scratch.file("euroc.rawlog");
   RawlogWriterOptions options;
   options.sensor_label = "EUROC";
@@ -53,7 +53,7 @@ TEST(DatasetConversionTest, KittiExcerptKeepsItsRectifiedPairAndPosesAsOdometry)
   if (!std::filesystem::exists(kKitti + "/calib.txt")) {
     GTEST_SKIP() << kKitti << " is absent (KITTI data are read from ../shared/data, not shipped)";
   }
-  ScratchDirectory scratch;
+  test_support::ScratchDirectory scratch;
   const std::string path = scratch.file("kitti.rawlog");
   RawlogWriterOptions options;
   options.sensor_label = "KITTI";

@@ -15,7 +15,7 @@ TEST(ExternalImagesTest, FolderIsNamedAfterTheRawlogStem) {
 }
 
 TEST(ExternalImagesTest, FindsTheSpellingThatExists) {
-  ScratchDirectory scratch;
+  test_support::ScratchDirectory scratch;
   const std::string rawlog = scratch.file("old.rawlog");
   EXPECT_EQ(findExternalImagesDirectory(rawlog), scratch.file("old_Images"));
   std::filesystem::create_directory(scratch.file("old_images"));
@@ -23,7 +23,7 @@ TEST(ExternalImagesTest, FindsTheSpellingThatExists) {
 }
 
 TEST(ExternalImagesTest, StoredImageIsAReferenceThatLoadsTheSamePixels) {
-  ScratchDirectory scratch;
+  test_support::ScratchDirectory scratch;
   const cv::Mat pixels = sampleFrames(binocularRig(), 1, CV_8UC3)[0].reference;
   mrpt::img::CImage image(pixels.clone(), mrpt::img::SHALLOW_COPY);
   storeImageExternally(image, scratch.file(""), "cam.png");

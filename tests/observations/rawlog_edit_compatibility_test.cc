@@ -38,7 +38,7 @@ class RawlogEditTest
 TEST_P(RawlogEditTest, ListsOurStereoAndImageObservations) {
   if (!std::filesystem::exists(kRawlogEdit)) GTEST_SKIP() << kRawlogEdit << " is not installed";
   const auto [layout, storage, trinocular] = GetParam();
-  ScratchDirectory scratch;
+  test_support::ScratchDirectory scratch;
   const auto frames = sampleFrames(trinocular ? triclopsRig() : binocularRig(), 3);
   {
     RawlogWriter writer(scratch.file("run.rawlog"), {layout, storage, 1, "TRICLOPS"});

@@ -99,7 +99,7 @@ class DamagedRawlogTest : public ::testing::Test {
   }
   void rewritePlain(const std::string& bytes) const { writeStringAtomically(path(0), bytes); }
 
-  ScratchDirectory scratch_;
+  test_support::ScratchDirectory scratch_;
   std::vector<RigFrame> frames_;
   std::string bytes_;
   std::vector<ObjectStart> objects_;
@@ -186,7 +186,7 @@ TEST_F(DamagedRawlogTest, CorruptedNestedObjectStopsAtTheObservationHoldingIt) {
 }
 
 TEST(RawlogReaderTest, NotARawlogIsDamageAtTheFirstObject) {
-  ScratchDirectory scratch;
+  test_support::ScratchDirectory scratch;
   const std::string path = scratch.file("notes.rawlog");
   writeStringAtomically(path, "these are not the observations you are looking for\n");
   const auto result = readAll(path);
@@ -206,7 +206,7 @@ TEST(RawlogReaderTest, MissingFileIsReportedByName) {
 }
 
 TEST(RawlogReaderTest, UnusableFramesAreSkippedAndCounted) {
-  ScratchDirectory scratch;
+  test_support::ScratchDirectory scratch;
   const std::string path = scratch.file("mixed.rawlog");
   const auto frames = sampleFrames(binocularRig(), 5);
   {
@@ -244,7 +244,7 @@ TEST(RawlogReaderTest, UnusableFramesAreSkippedAndCounted) {
 }
 
 TEST(RawlogReaderTest, FramesNotMatchingTheExpectedRigAreSkipped) {
-  ScratchDirectory scratch;
+  test_support::ScratchDirectory scratch;
   const std::string path = scratch.file("binocular.rawlog");
   {
     RawlogWriter writer(path, {});
@@ -265,7 +265,7 @@ TEST(RawlogReaderTest, FramesNotMatchingTheExpectedRigAreSkipped) {
 }
 
 TEST(RawlogReaderTest, FirstFrameSetsTheExpectationWhenNoRigIsGiven) {
-  ScratchDirectory scratch;
+  test_support::ScratchDirectory scratch;
   const std::string path = scratch.file("changing.rawlog");
   const auto triclops = sampleFrames(triclopsRig(), 2);
   const auto binocular = sampleFrames(binocularRig(), 1);
@@ -282,7 +282,7 @@ TEST(RawlogReaderTest, FirstFrameSetsTheExpectationWhenNoRigIsGiven) {
 }
 
 TEST(RawlogReaderTest, ForeignPairTakesItsReferenceSideFromTheExpectedRig) {
-  ScratchDirectory scratch;
+  test_support::ScratchDirectory scratch;
   const std::string path = scratch.file("foreign.rawlog");
   const auto frames = sampleFrames(sampleRig({{-1.0, 0.0}}), 1);
   {

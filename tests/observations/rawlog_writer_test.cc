@@ -31,7 +31,7 @@ class RawlogRoundTripTest
 
 TEST_P(RawlogRoundTripTest, ReadsBackTheFramesWritten) {
   const auto [layout, storage, head, compression_level] = GetParam();
-  ScratchDirectory scratch;
+  test_support::ScratchDirectory scratch;
   const std::string path = scratch.file("run.rawlog");
   const auto frames = sampleFrames(head == Head::kTriclops ? triclopsRig() : binocularRig(), 5);
   {
@@ -67,7 +67,7 @@ INSTANTIATE_TEST_SUITE_P(
                        ::testing::Values(0, 1)));
 
 TEST(RawlogRoundTripTest, ColourImagesKeepTheirChannels) {
-  ScratchDirectory scratch;
+  test_support::ScratchDirectory scratch;
   const std::string path = scratch.file("colour.rawlog");
   const auto frames = sampleFrames(triclopsRig(), 2, CV_8UC3);
   for (const auto storage : {ImageStorage::kEmbedded, ImageStorage::kExternal}) {
@@ -82,7 +82,7 @@ TEST(RawlogRoundTripTest, ColourImagesKeepTheirChannels) {
 }
 
 TEST(RawlogRoundTripTest, FirstSecondaryTwoUnitsAwayComesBackAsTheSameGeometryWithBFromThePair) {
-  ScratchDirectory scratch;
+  test_support::ScratchDirectory scratch;
   const std::string path = scratch.file("wide.rawlog");
   auto frames = sampleFrames(sampleRig({{2.0, 0.0}, {0.0, -1.0}}), 1);
   {
@@ -99,7 +99,7 @@ TEST(RawlogRoundTripTest, FirstSecondaryTwoUnitsAwayComesBackAsTheSameGeometryWi
 }
 
 TEST(RawlogRoundTripTest, OnlyTheChosenPairIsRead) {
-  ScratchDirectory scratch;
+  test_support::ScratchDirectory scratch;
   const std::string path = scratch.file("two_heads.rawlog");
   const auto front = sampleFrames(triclopsRig(), 2);
   const auto back = sampleFrames(binocularRig(), 2);
@@ -130,7 +130,7 @@ TEST(RawlogRoundTripTest, OnlyTheChosenPairIsRead) {
 }
 
 TEST(RawlogWriterTest, RejectedFrameWritesNothing) {
-  ScratchDirectory scratch;
+  test_support::ScratchDirectory scratch;
   const std::string path = scratch.file("bad.rawlog");
   auto frames = sampleFrames(binocularRig(), 2);
   frames[0].secondaries.clear();
@@ -146,7 +146,7 @@ TEST(RawlogWriterTest, RejectedFrameWritesNothing) {
 }
 
 TEST(RawlogWriterTest, WriteAfterFinishIsAnError) {
-  ScratchDirectory scratch;
+  test_support::ScratchDirectory scratch;
   RawlogWriter writer(scratch.file("done.rawlog"), {});
   writer.finish();
   EXPECT_THROW(writer.write(sampleFrames(binocularRig(), 1)[0]), std::logic_error);

@@ -3,14 +3,13 @@
 #include <gtest/gtest.h>
 #include <mrpt/core/bits_math.h>
 #include <mrpt/system/datetime.h>
-#include <unistd.h>
 
-#include <filesystem>
 #include <opencv2/core.hpp>
 #include <string>
 #include <vector>
 
 #include "observations/rig_frame.h"
+#include "support/scratch_directory.h"
 
 namespace stereonav {
 
@@ -91,27 +90,5 @@ inline void expectSameFrame(const RigFrame& expected, const RigFrame& actual) {
     EXPECT_NEAR(actual.odometry->phi(), expected.odometry->phi(), 1e-9);
   }
 }
-
-// A fresh, empty folder for one test's files, removed when the test ends.
-class ScratchDirectory {
- public:
-  ScratchDirectory() {
-    const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-    std::string name = std::string(test->test_suite_name()) + "_" + test->name();
-    for (char& c : name) {
-      if (c == '/') c = '_';
-    }
-    // The process id keeps concurrent runs (ctest -j, a sanitizer build) apart.
-    path_ = std::filesystem::temp_directory_path() /
-            ("stereonav_observations_" + name + "_" + std::to_string(::getpid()));
-    std::filesystem::remove_all(path_);
-    std::filesystem::create_directories(path_);
-  }
-  ~ScratchDirectory() { std::filesystem::remove_all(path_); }
-  std::string file(const std::string& name) const { return (path_ / name).string(); }
-
- private:
-  std::filesystem::path path_;
-};
 
 }  // namespace stereonav

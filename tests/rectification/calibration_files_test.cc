@@ -4,35 +4,27 @@
 #include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/img/TStereoCamera.h>
 #include <mrpt/poses/CPose3DQuat.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
 #include <opencv2/calib3d.hpp>
 
 #include "synthetic_heads.h"
+#include "support/scratch_directory.h"
 
 namespace stereonav {
 namespace {
 
 class CalibrationFilesTest : public ::testing::Test {
  protected:
-  CalibrationFilesTest() {
-    directory_ = std::filesystem::temp_directory_path() /
-                 ("stereonav_calibration_files_" +
-                  std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
-                  "_" + std::to_string(::getpid()));
-    std::filesystem::create_directories(directory_);
-  }
-  ~CalibrationFilesTest() override { std::filesystem::remove_all(directory_); }
   std::string file(const std::string& name, const std::string& text = "") const {
-    const std::string path = (directory_ / name).string();
+    const std::string path = scratch_.file(name);
     if (!text.empty()) std::ofstream(path) << text;
     return path;
   }
 
  private:
-  std::filesystem::path directory_;
+  test_support::ScratchDirectory scratch_;
 };
 
 void expectSameCamera(const CameraCalibration& a, const CameraCalibration& b, double tolerance) {

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "command_runner.h"
+#include "support/scratch_directory.h"
 
 namespace stereonav {
 namespace {
@@ -51,16 +52,7 @@ size_t keyLine(const std::string& text, const std::string& key) {
 
 class ReproTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    directory_ = fs::temp_directory_path() /
-                 ("stereonav_repro_" + std::to_string(::getpid()) + "_" +
-                  ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(directory_);
-    fs::create_directories(directory_);
-  }
-  void TearDown() override { fs::remove_all(directory_); }
-
-  std::string path(const std::string& name) const { return (directory_ / name).string(); }
+  std::string path(const std::string& name) const { return scratch_.file(name); }
 
   // A copy of repro file `from` with `key = ...` lines set to `value`, written to `name`.
   std::string variant(const std::string& from, const std::string& name,
@@ -115,12 +107,12 @@ class ReproTest : public ::testing::Test {
 
   // No temporary file (*.tmp<pid>.*) left in the test's folder or `folder`.
   void expectNoTemporaries(const std::string& folder = "") const {
-    for (const auto& entry : fs::recursive_directory_iterator(folder.empty() ? directory_ : fs::path(folder))) {
+    for (const auto& entry : fs::recursive_directory_iterator(folder.empty() ? scratch_.path() : fs::path(folder))) {
       EXPECT_EQ(entry.path().filename().string().find(".tmp"), std::string::npos) << entry.path();
     }
   }
 
-  fs::path directory_;
+  test_support::ScratchDirectory scratch_;
 };
 
 TEST_F(ReproTest, B1HugeBaselinesAreRejectedAndTheLargestAllowedOneMatches) {

@@ -9,6 +9,7 @@
 #include <iterator>
 
 #include "mapping/rawlog_mapping.h"
+#include "support/scratch_directory.h"
 
 namespace stereonav {
 namespace {
@@ -22,16 +23,9 @@ std::string readFile(const std::string& path) {
 
 class RosbagConversionTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    directory_ = std::filesystem::temp_directory_path() /
-                 ("stereonav_rosbag_" + std::to_string(::getpid()) + "_" +
-                  ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    std::filesystem::create_directories(directory_);
-  }
-  void TearDown() override { std::filesystem::remove_all(directory_); }
-  std::string path(const std::string& name) const { return (directory_ / name).string(); }
+  std::string path(const std::string& name) const { return scratch_.file(name); }
 
-  std::filesystem::path directory_;
+  test_support::ScratchDirectory scratch_;
 };
 
 // The office run through a bag and back maps to the very same grid: the bag carries every pixel,
