@@ -158,7 +158,7 @@ TEST(UnmatchedWallTest, TheGuardHoldsTheRobotBeforeAPaintedWallNearerThanTheFloo
 TEST(UnmatchedWallTest, TheGuardStopsShortOfThePaintsFootWhereTheFloorEnds) {
   constexpr double kStartX = kEndWallFace - 1.2;
   ExplorationConfig config = loadExplorationConfig(testing::shippedExplorationConfigPath());
-  config.mapping.projection.floor_end_clear_max_depth_m = 4.0;  // as ini/explore_320x240.ini
+  config.mapping.projection.floor_end_clear_max_depth_m = 8.0;  // as ini/explore_320x240.ini
   EXPECT_EQ(collisionsDrivingAt(corridorFrom(kStartX), config), 0);
   config.mapping.projection.floor_end_clear_max_depth_m = 0.0;
   EXPECT_GT(collisionsDrivingAt(corridorFrom(kStartX), config), 0);
