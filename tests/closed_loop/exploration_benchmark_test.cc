@@ -1,7 +1,6 @@
 #include "closed_loop/exploration_benchmark.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -9,6 +8,7 @@
 
 #include "common/image_file.h"
 #include "shipped_config.h"
+#include "support/scratch_directory.h"
 
 namespace stereonav {
 namespace {
@@ -27,9 +27,8 @@ size_t count(const std::string& text, const std::string& what) {
 // Two generated worlds x two seeds, a few simulated seconds each, two at a time: every run is in
 // the table, the JSON, the summary and the montage, and its own outputs are beside them.
 TEST(ExplorationBenchmarkTest, EveryRunIsTabledSummarisedAndDrawn) {
-  const std::filesystem::path directory =
-      std::filesystem::temp_directory_path() / ("stereonav_benchmark_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(directory);
+  const test_support::ScratchDirectory scratch;
+  const std::filesystem::path& directory = scratch.path();
   ExplorationBenchmarkJob job;
   job.world_seeds = {2, 5};
   job.run_seeds = {1, 2};
@@ -75,7 +74,6 @@ TEST(ExplorationBenchmarkTest, EveryRunIsTabledSummarisedAndDrawn) {
   const cv::Mat montage = readImageFile((directory / "montage.png").string(), cv::IMREAD_COLOR);
   EXPECT_EQ(montage.cols, 2 * 320);  // two tiles a row
   EXPECT_EQ(montage.rows, 2 * (320 + 22));
-  std::filesystem::remove_all(directory);
 }
 
 }  // namespace

@@ -13,6 +13,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "support/scratch_directory.h"
+
 namespace stereonav {
 namespace {
 
@@ -24,21 +26,18 @@ std::string readAll(const std::string& path) {
 }
 
 TEST(AtomicFileTest, ReplacesContentsAndLeavesNoTemporary) {
-  const auto directory = std::filesystem::temp_directory_path() / "stereonav_atomic_test";
-  std::filesystem::remove_all(directory);
-  std::filesystem::create_directories(directory);
+  const test_support::ScratchDirectory scratch;
+  const std::filesystem::path& directory = scratch.path();
   const std::string path = (directory / "out.txt").string();
   writeStringAtomically(path, "first");
   writeStringAtomically(path, "second");
   EXPECT_EQ(readAll(path), "second");
   EXPECT_EQ(std::distance(std::filesystem::directory_iterator(directory), {}), 1);
-  std::filesystem::remove_all(directory);
 }
 
 TEST(AtomicFileTest, FailedWriterKeepsThePreviousFile) {
-  const auto directory = std::filesystem::temp_directory_path() / "stereonav_atomic_fail";
-  std::filesystem::remove_all(directory);
-  std::filesystem::create_directories(directory);
+  const test_support::ScratchDirectory scratch;
+  const std::filesystem::path& directory = scratch.path();
   const std::string path = (directory / "map.png").string();
   writeStringAtomically(path, "good map");
   EXPECT_THROW(writeFileAtomically(path,
@@ -49,7 +48,6 @@ TEST(AtomicFileTest, FailedWriterKeepsThePreviousFile) {
                std::runtime_error);
   EXPECT_EQ(readAll(path), "good map");
   EXPECT_EQ(std::distance(std::filesystem::directory_iterator(directory), {}), 1);
-  std::filesystem::remove_all(directory);
 }
 
 TEST(AtomicFileTest, UnwritableDirectoryNamesThePath) {
@@ -83,9 +81,8 @@ class FileSizeLimit {
 };
 
 TEST(AtomicFileTest, FullDiskThrowsNamingTheFileAndKeepsThePrevious) {
-  const auto directory = std::filesystem::temp_directory_path() / "stereonav_atomic_full";
-  std::filesystem::remove_all(directory);
-  std::filesystem::create_directories(directory);
+  const test_support::ScratchDirectory scratch;
+  const std::filesystem::path& directory = scratch.path();
   const std::string path = (directory / "map.gridmap").string();
   writeStringAtomically(path, "good map");
   {
@@ -104,13 +101,11 @@ TEST(AtomicFileTest, FullDiskThrowsNamingTheFileAndKeepsThePrevious) {
   }
   EXPECT_EQ(readAll(path), "good map");
   EXPECT_EQ(std::distance(std::filesystem::directory_iterator(directory), {}), 1);
-  std::filesystem::remove_all(directory);
 }
 
 TEST(AtomicFileTest, ImagesAndGzArchivesRoundTrip) {
-  const auto directory = std::filesystem::temp_directory_path() / "stereonav_atomic_formats";
-  std::filesystem::remove_all(directory);
-  std::filesystem::create_directories(directory);
+  const test_support::ScratchDirectory scratch;
+  const std::filesystem::path& directory = scratch.path();
   cv::Mat1b image(20, 30);
   cv::randu(image, 0, 255);
   const std::string png = (directory / "a.png").string(), pgm = (directory / "a.pgm").string();
@@ -133,7 +128,6 @@ TEST(AtomicFileTest, ImagesAndGzArchivesRoundTrip) {
   EXPECT_EQ(text, "stereo");
   EXPECT_EQ(number, 42u);
   EXPECT_THROW(writeImageAtomically((directory / "a.unknown").string(), image), std::runtime_error);
-  std::filesystem::remove_all(directory);
 }
 
 TEST(OutputBatchTest, OneFailureDoesNotCostTheOthers) {

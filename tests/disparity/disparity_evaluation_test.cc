@@ -3,10 +3,10 @@
 #include <gtest/gtest.h>
 #include <opencv2/imgcodecs.hpp>
 
-#include <filesystem>
 #include <vector>
 
 #include "disparity/disparity_image.h"
+#include "support/scratch_directory.h"
 
 namespace stereonav {
 namespace {
@@ -37,12 +37,12 @@ TEST(DisparityEvaluationTest, ErrorsExactlyAtTheThresholdAreNotBad) {
 }
 
 TEST(DisparityEvaluationTest, LoadsMiddleburyGroundTruthWithScaleAndUnknownZero) {
-  const std::string path = (std::filesystem::temp_directory_path() / "stereonav_gt_test.pgm").string();
+  const test_support::ScratchDirectory scratch;
+  const std::string path = scratch.file("truth.pgm");
   cv::Mat1b raw(2, 2);
   raw << 0, 16, 80, 255;
   ASSERT_TRUE(cv::imwrite(path, raw));
   const cv::Mat1f truth = loadMiddleburyGroundTruth(path, 16.0);
-  std::filesystem::remove(path);
   EXPECT_EQ(truth(0, 0), kInvalidDisparity);
   EXPECT_FLOAT_EQ(truth(0, 1), 1.0f);
   EXPECT_FLOAT_EQ(truth(1, 0), 5.0f);
@@ -81,12 +81,12 @@ TEST(DisparityEvaluationTest, NonOccludedMaskHidesWhatTheForegroundCovers) {
 }
 
 TEST(DisparityEvaluationTest, LoadsMiddleburyMasksAs255Only) {
-  const std::string path = (std::filesystem::temp_directory_path() / "stereonav_mask_test.png").string();
+  const test_support::ScratchDirectory scratch;
+  const std::string path = scratch.file("mask.png");
   cv::Mat1b raw(1, 3);
   raw << 0, 128, 255;
   ASSERT_TRUE(cv::imwrite(path, raw));
   const cv::Mat1b mask = loadEvaluationMask(path);
-  std::filesystem::remove(path);
   EXPECT_EQ(mask(0, 0), 0);
   EXPECT_EQ(mask(0, 1), 0);
   EXPECT_EQ(mask(0, 2), 255);

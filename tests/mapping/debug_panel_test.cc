@@ -5,6 +5,7 @@
 
 #include <filesystem>
 
+#include "support/scratch_directory.h"
 #include "synthetic_scene.h"
 
 namespace stereonav {
@@ -100,12 +101,12 @@ TEST_F(DebugPanelTest, SavedPanelReadsBackUnchanged) {
   scanner.scan(frame_, times);
   DebugPanelRenderer renderer(options_, testing::testRig());
   const cv::Mat3b panel = renderer.render(scanner, 42, {});
-  const auto directory = std::filesystem::temp_directory_path();
+  const test_support::ScratchDirectory scratch;
+  const std::filesystem::path& directory = scratch.path();
   saveDebugPanel(panel, directory.string(), 42);
   const cv::Mat read = cv::imread((directory / "panel_000042.png").string(), cv::IMREAD_COLOR);
   ASSERT_EQ(read.size(), panel.size());
   EXPECT_EQ(cv::norm(read, panel, cv::NORM_INF), 0.0);
-  std::filesystem::remove(directory / "panel_000042.png");
 }
 
 }  // namespace

@@ -3,11 +3,10 @@
 #include <gtest/gtest.h>
 #include <mrpt/config/CConfigFileMemory.h>
 
-#include <filesystem>
 #include <fstream>
-#include <unistd.h>
 
 #include "support/options_loading.h"
+#include "support/scratch_directory.h"
 
 namespace stereonav {
 namespace {
@@ -62,8 +61,8 @@ TEST(MappingOptionsTest, UnknownKeysAreRejectedInEverySection) {
 }
 
 TEST(MappingOptionsTest, RawlogSectionNamesSeparateCamerasAndACalibrationFile) {
-  const std::string path =
-      (std::filesystem::temp_directory_path() / ("mapping_options_calib_" + std::to_string(::getpid()) + ".yaml")).string();
+  const test_support::ScratchDirectory scratch;
+  const std::string path = scratch.file("calibration.yaml");
   std::ofstream(path) << "%YAML:1.0\nM1: [400, 0, 320, 0, 400, 240, 0, 0, 1]\nD1: [-0.1, 0, 0, 0]\n"
                          "M2: [400, 0, 320, 0, 400, 240, 0, 0, 1]\nD2: [0, 0, 0, 0]\n"
                          "R: [1, 0, 0, 0, 1, 0, 0, 0, 1]\nT: [-0.12, 0, 0]\n";
@@ -74,7 +73,6 @@ TEST(MappingOptionsTest, RawlogSectionNamesSeparateCamerasAndACalibrationFile) {
   ASSERT_TRUE(options.calibration.has_value());
   EXPECT_DOUBLE_EQ(options.calibration->cameras[1].centreInReference()[0], 0.12);
   EXPECT_DOUBLE_EQ(options.calibration->cameras[0].distortion[0], -0.1);
-  std::filesystem::remove(path);
   const std::string missing = errorOf("[rawlog]\ncalibration = /nonexistent/calib.yaml\n");
   EXPECT_NE(missing.find("[rawlog] calibration: /nonexistent/calib.yaml: cannot read"), std::string::npos)
       << missing;
@@ -82,7 +80,8 @@ TEST(MappingOptionsTest, RawlogSectionNamesSeparateCamerasAndACalibrationFile) {
 
 TEST(MappingOptionsTest, FileErrorsNameTheFile) {
   EXPECT_THROW(loadMappingOptionsFile("/nonexistent/map.ini"), std::runtime_error);
-  const std::string path = (std::filesystem::temp_directory_path() / "mapping_options_test.ini").string();
+  const test_support::ScratchDirectory scratch;
+  const std::string path = scratch.file("mapping.ini");
   std::ofstream(path) << "[stereo]\nwindwo = 7\n";
   try {
     loadMappingOptionsFile(path);
@@ -90,7 +89,6 @@ TEST(MappingOptionsTest, FileErrorsNameTheFile) {
   } catch (const ConfigError& error) {
     EXPECT_EQ(std::string(error.what()).rfind(path + ": [stereo] ", 0), 0u) << error.what();
   }
-  std::filesystem::remove(path);
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include <fstream>
 
 #include "mapping/rawlog_mapping.h"
+#include "support/scratch_directory.h"
 
 namespace stereonav {
 namespace {
@@ -31,7 +32,8 @@ TEST(VirtualScanRecorderTest, SavesOdometryAndScansInOrder) {
     recorder.add(scan, mrpt::poses::CPose2D(i, 0.0, 0.0));
   }
   EXPECT_EQ(recorder.size(), 3u);
-  const std::string path = (fs::temp_directory_path() / "virtual_scans_test.rawlog").string();
+  const test_support::ScratchDirectory scratch;
+  const std::string path = scratch.file("virtual_scans.rawlog");
   recorder.save(path);
   mrpt::io::CFileGZInputStream file(path);
   auto archive = mrpt::serialization::archiveFrom(file);
@@ -45,7 +47,6 @@ TEST(VirtualScanRecorderTest, SavesOdometryAndScansInOrder) {
     EXPECT_EQ(scan->getScanRange(2), 1.0f + i);
     EXPECT_EQ(scan->timestamp, odometry->timestamp);
   }
-  fs::remove(path);
 }
 
 // Stock icp-slam, with the shipped ini, on the virtual scans of the sample run: it must accept the
