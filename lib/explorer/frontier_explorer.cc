@@ -64,6 +64,7 @@ void FrontierExplorer::updateMap(const DisparityTaggedGrid& grid, const mrpt::po
   map_frontiers_ = findFrontiers(*grid_, options_.min_frontier_cells);
   awaiting_map_ = false;
   frontier_memory_.countCloseViews(*grid_, map_frontiers_, pose);
+  frontier_memory_.dropSurfaced(*grid_, map_frontiers_, guard_.newestScan(), pose);
   replan();
 }
 
@@ -238,10 +239,19 @@ bool FrontierExplorer::relaxToBareBody() {
 VelocityCommand FrontierExplorer::recoverUnreachable(const mrpt::poses::CPose2D& pose, double time_s) {
   if (!motion_.lookedAroundHere()) return lookAround(pose);
   NearObstacleMemory& near_obstacles = guard_.nearObstacles();
+  const auto give_up = [&](const std::string& reason) -> VelocityCommand {
+    if (!frontier_memory_.beginSecondPass()) {
+      finish(frontier_memory_.inSecondPass() ? reason + " (in the second pass over every frontier given up)" : reason);
+      return {};
+    }
+    motion_.forgetLookAround();
+    replan();
+    return lookAround(pose);
+  };
   if (frontiers_.empty() && frontier_memory_.looks() == 0) {
-    finish("no frontier left: every known free cell borders only known cells");
+    return give_up("no frontier left: every known free cell borders only known cells");
   } else if (frontiers_.empty()) {
-    finish("no frontier left: the rest were looked at from up close without resolving (" +
+    return give_up("no frontier left: the rest were looked at from up close without resolving (" +
            std::to_string(frontier_memory_.looks()) + " looks)");
   } else if (!forgot_here_ &&
              near_obstacles.forgetUnconfirmed([&](double x, double y) { return grid_->mapHoldsObstacle(x, y); }) > 0) {
@@ -287,7 +297,7 @@ VelocityCommand FrontierExplorer::recoverUnreachable(const mrpt::poses::CPose2D&
   } else {
     size_t cells = 0;
     for (const Frontier& frontier : frontiers_) cells += frontier.cells.size();
-    finish("no reachable frontier left: " + std::to_string(frontiers_.size()) + " frontier(s) of " + std::to_string(cells) +
+    return give_up("no reachable frontier left: " + std::to_string(frontiers_.size()) + " frontier(s) of " + std::to_string(cells) +
            " cells lie beyond gaps narrower than the robot or across unknown space, none within " +
            metres(options_.look_from_afar_m) + " m of where the robot can go");
   }

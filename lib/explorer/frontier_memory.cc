@@ -32,6 +32,43 @@ void FrontierMemory::countCloseViews(const NavigationGrid& grid, const std::vect
   }
 }
 
+void FrontierMemory::dropSurfaced(const NavigationGrid& grid, const std::vector<Frontier>& frontiers,
+                                  const std::vector<mrpt::math::TPoint2D>& scan, const mrpt::poses::CPose2D& pose) {
+  std::set<std::pair<int, int>> surfaced;
+  for (const mrpt::math::TPoint2D& point : scan) {
+    int col = 0, row = 0;
+    if (std::hypot(point.x - pose.x(), point.y - pose.y()) <= options_.seen_free_range_m &&
+        grid.cellAt(point.x, point.y, col, row)) {
+      surfaced.emplace(col, row);
+    }
+  }
+  if (surfaced.empty()) return;
+  const cv::Rect inside(0, 0, grid.cellClasses().cols, grid.cellClasses().rows);
+  for (const Frontier& frontier : frontiers) {
+    for (const cv::Point& cell : frontier.cells) {
+      int unresolved = 0, seen = 0;
+      for (const cv::Point& step : {cv::Point(1, 0), cv::Point(-1, 0), cv::Point(0, 1), cv::Point(0, -1)}) {
+        const cv::Point next = cell + step;
+        if (!inside.contains(next)) continue;
+        const uint8_t kind = grid.cellClass(next.x, next.y);
+        if (kind != NavigationGrid::kUnknown && kind != NavigationGrid::kImprecise) continue;
+        ++unresolved;
+        seen += surfaced.count({next.x, next.y}) > 0 ? 1 : 0;
+      }
+      if (unresolved > 0 && seen == unresolved) drop(grid, cell);
+    }
+  }
+}
+
+bool FrontierMemory::beginSecondPass() {
+  if (second_pass_ || (dropped_.empty() && looked_from_.empty() && close_views_.empty())) return false;
+  second_pass_ = true;
+  dropped_.clear();
+  looked_from_.clear();
+  close_views_.clear();
+  return true;
+}
+
 bool FrontierMemory::isDropped(const NavigationGrid& grid, int col, int row) const {
   const double x = grid.centreX(col), y = grid.centreY(row);
   const double half_view = options_.field_of_view_deg * M_PI / 360.0;

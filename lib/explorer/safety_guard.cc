@@ -31,6 +31,11 @@ constexpr double kContactBeyondBody = 0.05;
 SafetyGuard::SafetyGuard(const ExplorerOptions& options)
     : options_(options), near_obstacles_(nearObstacleOptions(options)) {}
 
+const std::vector<mrpt::math::TPoint2D>& SafetyGuard::newestScan() const {
+  static const std::vector<mrpt::math::TPoint2D> kNone;
+  return recent_scans_.empty() ? kNone : recent_scans_.back().second;
+}
+
 double SafetyGuard::reach() const {
   return options_.guard_horizon_m + options_.robot_radius_m + options_.guard_margin_m;
 }

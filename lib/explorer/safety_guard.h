@@ -54,6 +54,9 @@ class SafetyGuard {
   // Whatever stops the body lies on its front arc: remembered as obstacles there.
   void rememberContact(const mrpt::poses::CPose2D& pose);
 
+  // The newest scan's points within the guard's reach (map frame).
+  const std::vector<mrpt::math::TPoint2D>& newestScan() const;
+
   // What the planner must also treat as obstacles: the contacts and the near obstacles.
   std::vector<cv::Point2d> rememberedObstacles() const;
   const std::vector<cv::Point2d>& contacts() const { return contacts_; }

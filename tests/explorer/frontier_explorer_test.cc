@@ -157,6 +157,50 @@ TEST(FrontierExplorerTest, LooksFromTheNearestPlaceItReachesAtAFrontierBeyondADo
       << explorer.stopReason() << " " << phaseName(explorer.status().phase) << " " << robot.pose_.asString();
 }
 
+TEST(FrontierExplorerTest, BeforeEndingItTriesEveryFrontierItGaveUpOnceMore) {
+  // The door too narrow: looked at from the nearest place the body reaches, its frontier is given
+  // up, and one look around there (2 pi) ends the first pass. Once the robot has turned more than
+  // that in its look around, the door is widened to 1.3 m, as when a person who stood in it
+  // leaves: the frontier beyond, given up in the first pass, is tried again.
+  TestGrid cells = doorTooNarrowForTheBody();
+  FrontierExplorer explorer(testOptions());
+  KinematicRobot robot({2.0, 2.0, M_PI / 2});
+  bool looked_at_the_door = false, opened = false;
+  double turned_before_looking_around = -1.0;
+  for (int steps = 0; steps < 8000 && !explorer.finished(); ++steps) {
+    const ExplorerPhase phase = explorer.status().phase;
+    looked_at_the_door |= phase == ExplorerPhase::kLookingAtFrontier && robot.pose_.x > 4.4;
+    if (looked_at_the_door && turned_before_looking_around < 0.0 && phase == ExplorerPhase::kLookingAround) {
+      turned_before_looking_around = robot.turned_;
+    }
+    if (!opened && turned_before_looking_around >= 0.0 &&
+        robot.turned_ > turned_before_looking_around + 2.0 * M_PI + 1.0) {
+      cells.free(50, 14, 60, 26).unknown(61, 14, 61, 26);
+      opened = true;
+    }
+    if (steps % 4 == 0) explorer.updateMap(cells.grid(), mrpt::poses::CPose2D(robot.pose_));  // 5 Hz
+    if (!explorer.controlStep(robot)) break;
+    robot.step(0.05);
+  }
+  EXPECT_TRUE(opened) << explorer.stopReason();
+  EXPECT_GT(robot.pose_.x, 5.2) << explorer.stopReason();  // through the door (the wall: x 5.0 .. 5.1)
+}
+
+TEST(FrontierExplorerTest, AfterTheSecondPassTheStopReasonSaysSo) {
+  // The door too narrow, never opening: the frontier beyond is given up, tried again in the
+  // second pass, given up again.
+  const TestGrid cells = doorTooNarrowForTheBody();
+  FrontierExplorer explorer(testOptions());
+  KinematicRobot robot({2.0, 2.0, M_PI / 2});
+  for (int steps = 0; steps < 8000 && !explorer.finished(); ++steps) {
+    if (steps % 4 == 0) explorer.updateMap(cells.grid(), mrpt::poses::CPose2D(robot.pose_));  // 5 Hz
+    if (!explorer.controlStep(robot)) break;
+    robot.step(0.05);
+  }
+  EXPECT_EQ(explorer.stopReason().rfind("no frontier left: the rest were looked at", 0), 0u) << explorer.stopReason();
+  EXPECT_NE(explorer.stopReason().find("second pass"), std::string::npos) << explorer.stopReason();
+}
+
 TEST(FrontierExplorerTest, StopsWhenTheOnlyFrontierIsBeyondADoorTooNarrowAndFartherThanItLooksFrom) {
   const TestGrid cells = doorTooNarrowForTheBody();
   ExplorerOptions options = testOptions();

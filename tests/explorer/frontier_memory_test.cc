@@ -87,5 +87,79 @@ TEST(FrontierMemoryTest, DroppedCellsKeepTheirNamesWhenTheGridGrows) {
   EXPECT_FALSE(memory.isDropped(larger, 29, 20));
 }
 
+TEST(FrontierMemoryTest, ACellWhoseUnknownSideAScanShowsASurfaceOnIsDropped) {
+  // A wall stereo cannot match along x = 3.03: the map holds it unknown (columns 30..39), the
+  // scan reports its foot. Points on it from y 1.0 to 2.58 (rows 10..25), read from (1.5, 2.05).
+  const TestGrid cells = openToTheEast();
+  const NavigationGrid grid = navigationGrid(cells);
+  FrontierMemory memory(options());
+  memory.anchor(cells.grid().frame());
+  std::vector<mrpt::math::TPoint2D> scan;
+  for (int k = 0; k < 80; ++k) scan.emplace_back(3.03, 1.0 + 0.02 * k);
+  // And one beyond the 2 m of seen_free_range_m: (3.03, 3.95) is 2.5 m away.
+  scan.emplace_back(3.03, 3.95);
+  memory.dropSurfaced(grid, {column(29, 0, 39)}, scan, mrpt::poses::CPose2D(1.5, 2.05, 0.0));
+  EXPECT_TRUE(memory.isDropped(grid, 29, 10));
+  EXPECT_TRUE(memory.isDropped(grid, 29, 25));
+  // Beside the surface seen, and beside the far point: still open.
+  EXPECT_FALSE(memory.isDropped(grid, 29, 9));
+  EXPECT_FALSE(memory.isDropped(grid, 29, 26));
+  EXPECT_FALSE(memory.isDropped(grid, 29, 39));
+}
+
+TEST(FrontierMemoryTest, ACellWithAnUnknownSideNoSurfaceWasSeenOnStaysOpen) {
+  // A corner of the unknown: cell (29, 20) has unknown cells east (30, 20) and, with the cell
+  // north of it unknown too, north (29, 21). The scan shows a surface only on the east one.
+  TestGrid cells = openToTheEast();
+  cells.unknown(0, 21, 29, 39);
+  const NavigationGrid grid = navigationGrid(cells);
+  FrontierMemory memory(options());
+  memory.anchor(cells.grid().frame());
+  const std::vector<mrpt::math::TPoint2D> scan{{3.03, 2.05}, {3.03, 1.95}};
+  const Frontier corner = column(29, 19, 20);
+  memory.dropSurfaced(grid, {corner}, scan, mrpt::poses::CPose2D(1.5, 2.0, 0.0));
+  EXPECT_FALSE(memory.isDropped(grid, 29, 20));
+  EXPECT_TRUE(memory.isDropped(grid, 29, 19));
+}
+
+TEST(FrontierMemoryTest, TheSecondPassForgetsEveryCellGivenUpOnce) {
+  const TestGrid cells = openToTheEast();
+  const NavigationGrid grid = navigationGrid(cells);
+  FrontierMemory memory(options());
+  memory.anchor(cells.grid().frame());
+  // Nothing given up yet: no second pass is needed, and it stays available.
+  EXPECT_FALSE(memory.beginSecondPass());
+  EXPECT_FALSE(memory.inSecondPass());
+  // Fresh memory, each rule used once: a look east from (2.2, 2.05) (rows 14..26 of column 29),
+  // an explicit drop (row 35) and the unmatched wall of the test above (rows 10..25, from 1.5 m).
+  FrontierMemory used(options());
+  used.anchor(cells.grid().frame());
+  used.lookedFrom(mrpt::poses::CPose2D(2.2, 2.05, 0.0));
+  used.drop(grid, {29, 35});
+  std::vector<mrpt::math::TPoint2D> wall;
+  for (int k = 0; k < 80; ++k) wall.emplace_back(3.03, 1.0 + 0.02 * k);
+  const mrpt::poses::CPose2D reading_pose(1.5, 2.05, 0.0);
+  used.dropSurfaced(grid, {column(29, 0, 39)}, wall, reading_pose);
+  EXPECT_TRUE(used.isDropped(grid, 29, 10));
+  EXPECT_TRUE(used.isDropped(grid, 29, 20));
+  EXPECT_TRUE(used.isDropped(grid, 29, 35));
+
+  EXPECT_FALSE(used.inSecondPass());
+  EXPECT_TRUE(used.beginSecondPass());
+  EXPECT_TRUE(used.inSecondPass());
+  EXPECT_EQ(used.looks(), 0u);
+  for (int row = 0; row < 40; ++row) EXPECT_FALSE(used.isDropped(grid, 29, row)) << row;
+  // The rules hold in the second pass: the wall read again and a look drop cells as before.
+  used.dropSurfaced(grid, {column(29, 0, 39)}, wall, reading_pose);
+  EXPECT_TRUE(used.isDropped(grid, 29, 10));
+  EXPECT_FALSE(used.isDropped(grid, 29, 35));
+  used.lookedFrom(mrpt::poses::CPose2D(2.2, 2.05, 0.0));
+  EXPECT_TRUE(used.isDropped(grid, 29, 20));
+  // Once only.
+  EXPECT_FALSE(used.beginSecondPass());
+  EXPECT_TRUE(used.isDropped(grid, 29, 10));
+  EXPECT_TRUE(used.isDropped(grid, 29, 20));
+}
+
 }  // namespace
 }  // namespace stereonav
