@@ -19,6 +19,21 @@ TestGrid openToTheEast() {
   return cells;
 }
 
+// A memory anchored at `cells`' frame, as the explorer's is at its first map.
+FrontierMemory anchoredMemory(const TestGrid& cells) {
+  FrontierMemory memory(options());
+  memory.anchor(cells.grid().frame());
+  return memory;
+}
+
+// The foot of a wall stereo cannot match along x = 3.03 (the unknown columns 30..39 of
+// openToTheEast), as the scan reports it: points from y 1.0 to 2.58 (rows 10..25).
+std::vector<mrpt::math::TPoint2D> unmatchedWallFoot() {
+  std::vector<mrpt::math::TPoint2D> scan;
+  for (int k = 0; k < 80; ++k) scan.emplace_back(3.03, 1.0 + 0.02 * k);
+  return scan;
+}
+
 Frontier column(int col, int row0, int row1) {
   Frontier frontier;
   for (int row = row0; row <= row1; ++row) frontier.cells.emplace_back(col, row);
@@ -28,8 +43,7 @@ Frontier column(int col, int row0, int row1) {
 TEST(FrontierMemoryTest, CellsInViewWithinRangeOfALookAreDropped) {
   const TestGrid cells = openToTheEast();
   const NavigationGrid grid = navigationGrid(cells);
-  FrontierMemory memory(options());
-  memory.anchor(cells.grid().frame());
+  FrontierMemory memory = anchoredMemory(cells);
   // Looking east from (2.2, 2.05): column 29 (x 2.95) is 0.75 m ahead.
   memory.lookedFrom(mrpt::poses::CPose2D(2.2, 2.05, 0.0));
   EXPECT_EQ(memory.looks(), 1u);
@@ -45,8 +59,7 @@ TEST(FrontierMemoryTest, CellsInViewWithinRangeOfALookAreDropped) {
 TEST(FrontierMemoryTest, WithoutDroppedRemovesDroppedCellsAndFrontiersLeftTooSmall) {
   const TestGrid cells = openToTheEast();
   const NavigationGrid grid = navigationGrid(cells);
-  FrontierMemory memory(options());
-  memory.anchor(cells.grid().frame());
+  FrontierMemory memory = anchoredMemory(cells);
   memory.drop(grid, {29, 5});
   memory.drop(grid, {29, 30});
   memory.drop(grid, {29, 31});
@@ -61,8 +74,7 @@ TEST(FrontierMemoryTest, ACellInPlainSightUpCloseIsDroppedAfterTheResolvingViews
   TestGrid cells = openToTheEast();
   cells.occupied(25, 21, 25, 35);  // hides the frontier's cells north of row 21 from the robot
   const NavigationGrid grid = navigationGrid(cells);
-  FrontierMemory memory(options());
-  memory.anchor(cells.grid().frame());
+  FrontierMemory memory = anchoredMemory(cells);
   const std::vector<Frontier> frontiers = {column(29, 15, 35)};
   const mrpt::poses::CPose2D pose(2.2, 2.05, 0.0);
   for (int view = 1; view < 12; ++view) memory.countCloseViews(grid, frontiers, pose);
@@ -88,14 +100,11 @@ TEST(FrontierMemoryTest, DroppedCellsKeepTheirNamesWhenTheGridGrows) {
 }
 
 TEST(FrontierMemoryTest, ACellWhoseUnknownSideAScanShowsASurfaceOnIsDropped) {
-  // A wall stereo cannot match along x = 3.03: the map holds it unknown (columns 30..39), the
-  // scan reports its foot. Points on it from y 1.0 to 2.58 (rows 10..25), read from (1.5, 2.05).
+  // unmatchedWallFoot, read from (1.5, 2.05).
   const TestGrid cells = openToTheEast();
   const NavigationGrid grid = navigationGrid(cells);
-  FrontierMemory memory(options());
-  memory.anchor(cells.grid().frame());
-  std::vector<mrpt::math::TPoint2D> scan;
-  for (int k = 0; k < 80; ++k) scan.emplace_back(3.03, 1.0 + 0.02 * k);
+  FrontierMemory memory = anchoredMemory(cells);
+  std::vector<mrpt::math::TPoint2D> scan = unmatchedWallFoot();
   // And one beyond the 2 m of seen_free_range_m: (3.03, 3.95) is 2.5 m away.
   scan.emplace_back(3.03, 3.95);
   memory.dropSurfaced(grid, {column(29, 0, 39)}, scan, mrpt::poses::CPose2D(1.5, 2.05, 0.0));
@@ -113,8 +122,7 @@ TEST(FrontierMemoryTest, ACellWithAnUnknownSideNoSurfaceWasSeenOnStaysOpen) {
   TestGrid cells = openToTheEast();
   cells.unknown(0, 21, 29, 39);
   const NavigationGrid grid = navigationGrid(cells);
-  FrontierMemory memory(options());
-  memory.anchor(cells.grid().frame());
+  FrontierMemory memory = anchoredMemory(cells);
   const std::vector<mrpt::math::TPoint2D> scan{{3.03, 2.05}, {3.03, 1.95}};
   const Frontier corner = column(29, 19, 20);
   memory.dropSurfaced(grid, {corner}, scan, mrpt::poses::CPose2D(1.5, 2.0, 0.0));
@@ -125,19 +133,16 @@ TEST(FrontierMemoryTest, ACellWithAnUnknownSideNoSurfaceWasSeenOnStaysOpen) {
 TEST(FrontierMemoryTest, TheSecondPassForgetsEveryCellGivenUpOnce) {
   const TestGrid cells = openToTheEast();
   const NavigationGrid grid = navigationGrid(cells);
-  FrontierMemory memory(options());
-  memory.anchor(cells.grid().frame());
+  FrontierMemory memory = anchoredMemory(cells);
   // Nothing given up yet: no second pass is needed, and it stays available.
   EXPECT_FALSE(memory.beginSecondPass());
   EXPECT_FALSE(memory.inSecondPass());
   // Fresh memory, each rule used once: a look east from (2.2, 2.05) (rows 14..26 of column 29),
-  // an explicit drop (row 35) and the unmatched wall of the test above (rows 10..25, from 1.5 m).
-  FrontierMemory used(options());
-  used.anchor(cells.grid().frame());
+  // an explicit drop (row 35) and unmatchedWallFoot read from 1.5 m (rows 10..25).
+  FrontierMemory used = anchoredMemory(cells);
   used.lookedFrom(mrpt::poses::CPose2D(2.2, 2.05, 0.0));
   used.drop(grid, {29, 35});
-  std::vector<mrpt::math::TPoint2D> wall;
-  for (int k = 0; k < 80; ++k) wall.emplace_back(3.03, 1.0 + 0.02 * k);
+  const std::vector<mrpt::math::TPoint2D> wall = unmatchedWallFoot();
   const mrpt::poses::CPose2D reading_pose(1.5, 2.05, 0.0);
   used.dropSurfaced(grid, {column(29, 0, 39)}, wall, reading_pose);
   EXPECT_TRUE(used.isDropped(grid, 29, 10));
