@@ -203,6 +203,10 @@ void RayCaster::drawBoxOnRow(const Solid& box, int index, double nearest_t, cons
   for (int x = begin; x <= end; x += 4) {
     Lanes t_max;
     for (int lane = 0; lane < 4; ++lane) t_max[lane] = x + lane <= end ? row[x + lane].t : -kNoHit;
+    // Pixels already nearer than the box's nearest corner (or past the span) are not tested:
+    // behind a nearer wall or desk, most of a box's silhouette.
+    LaneMasks missed = t_max <= nearest_t;
+    if (!(missed[0] == 0 || missed[1] == 0 || missed[2] == 0 || missed[3] == 0)) continue;
     const Lanes column = static_cast<double>(x) + lane_offsets;
     const Lanes dx = row_start.x() + column * rays_.right.x();
     const Lanes dy = row_start.y() + column * rays_.right.y();
@@ -212,8 +216,6 @@ void RayCaster::drawBoxOnRow(const Solid& box, int index, double nearest_t, cons
     Lanes t_near = Lanes{} - kNoHit;
     Lanes t_far = t_max;
     LaneMasks near_face = LaneMasks{} - 1;
-    // Pixels already nearer than the box's nearest corner (or past the span) are not tested.
-    LaneMasks missed = t_max <= nearest_t;
     clipSlabLanes(local_ox, local_dx, -box.half_x, box.half_x, kFacePlusX, t_near, t_far, near_face, missed);
     clipSlabLanes(local_oy, local_dy, -box.half_y, box.half_y, kFacePlusY, t_near, t_far, near_face, missed);
     clipSlabLanes(rays_.origin.z(), dz, box.z_min, box.z_max, kFaceTop, t_near, t_far, near_face, missed);
@@ -222,6 +224,107 @@ void RayCaster::drawBoxOnRow(const Solid& box, int index, double nearest_t, cons
       if (hit[lane]) row[x + lane] = {t_near[lane], index, static_cast<int32_t>(near_face[lane])};
     }
   }
+}
+
+void RowSurfaces::resize(size_t width) {
+  for (auto* values : {&t, &x, &y, &z, &normal_x, &normal_y, &normal_z, &u, &v, &texture_offset}) {
+    values->resize(width);
+  }
+  column.resize(width);
+  texture.resize(width);
+}
+
+void RayCaster::rowSurfaces(int y, RowSurfaces& row) const {
+  const int width = rays_.width;
+  row.resize(static_cast<size_t>(width));
+  const PixelHit* hits = &hits_[static_cast<size_t>(y) * width];
+  // Ray::direction and SurfacePoint::position as hit() computes them, component by component.
+  const Eigen::Vector3d row_start = rays_.rowStart(y);
+  const Eigen::Vector3d& origin = rays_.origin;
+  const Eigen::Vector3d& right = rays_.right;
+  size_t count = 0;
+  for (int begin = 0; begin < width;) {
+    const int source = hits[begin].source;
+    const int face = hits[begin].face;
+    int end = begin + 1;
+    while (end < width && hits[end].source == source && hits[end].face == face) ++end;
+    for (int x = begin; x < end; ++x) row.t[x] = hits[x].t;
+    if (source == kNothing) {
+      begin = end;
+      continue;
+    }
+    const size_t first = count;
+    for (int x = begin; x < end; ++x, ++count) {
+      const double t = hits[x].t;
+      const double column = x;
+      row.column[count] = x;
+      row.x[count] = origin.x() + t * (row_start.x() + column * right.x());
+      row.y[count] = origin.y() + t * (row_start.y() + column * right.y());
+      row.z[count] = origin.z() + t * (row_start.z() + column * right.z());
+    }
+    const auto fill = [&](std::vector<double>& values, double value) {
+      std::fill(values.begin() + first, values.begin() + count, value);
+    };
+    const auto setNormal = [&](double nx, double ny, double nz) {
+      fill(row.normal_x, nx);
+      fill(row.normal_y, ny);
+      fill(row.normal_z, nz);
+    };
+    if (source == kFloor || source == kCeiling) {
+      setNormal(0.0, 0.0, source == kFloor ? 1.0 : -1.0);
+      std::copy(row.x.begin() + first, row.x.begin() + count, row.u.begin() + first);
+      std::copy(row.y.begin() + first, row.y.begin() + count, row.v.begin() + first);
+      std::fill(row.texture.begin() + first, row.texture.begin() + count,
+                source == kFloor ? world_.floor_texture : world_.ceiling_texture);
+      fill(row.texture_offset, 0.0);
+      begin = end;
+      continue;
+    }
+    // surfaceOfSolid (ray_intersection.h) with the face's branches taken once for the run.
+    const Solid& hit_solid = solid(source);
+    std::fill(row.texture.begin() + first, row.texture.begin() + count, hit_solid.texture);
+    fill(row.texture_offset, hit_solid.texture_offset);
+    if (face == kFaceTop || face == kFaceBottom) {
+      setNormal(0.0, 0.0, face == kFaceTop ? 1.0 : -1.0);
+      for (size_t i = first; i < count; ++i) {
+        row.u[i] = row.x[i] - hit_solid.x;
+        row.v[i] = row.y[i] - hit_solid.y;
+      }
+    } else if (hit_solid.shape == Solid::Shape::kCylinder) {
+      fill(row.normal_z, 0.0);
+      for (size_t i = first; i < count; ++i) {
+        const double px = row.x[i] - hit_solid.x;
+        const double py = row.y[i] - hit_solid.y;
+        row.normal_x[i] = px / hit_solid.radius;
+        row.normal_y[i] = py / hit_solid.radius;
+        row.u[i] = hit_solid.radius * std::atan2(py, px);
+        row.v[i] = row.z[i];
+      }
+    } else {
+      // The face's outward normal, and u along the face: +-local_y on the x faces, -+local_x on
+      // the y faces.
+      const double cos_yaw = hit_solid.cos_yaw, sin_yaw = hit_solid.sin_yaw;
+      const bool x_face = face == kFacePlusX || face == kFaceMinusX;
+      const bool plus_face = face == kFacePlusX || face == kFacePlusY;
+      if (x_face) {
+        setNormal(plus_face ? cos_yaw : -cos_yaw, plus_face ? sin_yaw : -sin_yaw, plus_face ? 0.0 : -0.0);
+      } else {
+        setNormal(plus_face ? -sin_yaw : sin_yaw, plus_face ? cos_yaw : -cos_yaw, plus_face ? 0.0 : -0.0);
+      }
+      // u = sign * (x faces: local_y; y faces: local_x), local_* as surfaceOfSolid rotates them.
+      const double sign = x_face == plus_face ? 1.0 : -1.0;
+      const double along_x = x_face ? -sin_yaw : cos_yaw;
+      const double along_y = x_face ? cos_yaw : sin_yaw;
+      for (size_t i = first; i < count; ++i) {
+        const double px = row.x[i] - hit_solid.x;
+        const double py = row.y[i] - hit_solid.y;
+        row.u[i] = sign * (along_x * px + along_y * py);
+        row.v[i] = row.z[i];
+      }
+    }
+    begin = end;
+  }
+  row.count = count;
 }
 
 void RayCaster::addSegment(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {

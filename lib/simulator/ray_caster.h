@@ -35,6 +35,22 @@ struct RayHit {
   double texture_offset = 0.0;  // Solid::texture_offset of the surface hit
 };
 
+// What the pixels of one image row see, as arrays that vector loops read: the depth of every
+// pixel's nearest hit, and for the pixels that see a surface, in column order, where and what it
+// is (RayHit's fields, one array each).
+struct RowSurfaces {
+  std::vector<double> t;  // every pixel of the row; kNoHit where it sees nothing
+  size_t count = 0;       // the pixels that see a surface; the arrays below hold them first
+  std::vector<int> column;
+  std::vector<double> x, y, z;
+  std::vector<double> normal_x, normal_y, normal_z;
+  std::vector<double> u, v;
+  std::vector<int> texture;
+  std::vector<double> texture_offset;
+
+  void resize(size_t width);
+};
+
 // Finds the first surface along the centre ray of every pixel of an image: the floor, the
 // optional ceiling, and the solids, static and moving. Like a z-buffer, it visits the solids
 // rather than the rays: each solid's exact ray test runs only on the pixels its silhouette covers
@@ -52,6 +68,11 @@ class RayCaster {
   void cast(const PixelRays& rays);
   // The nearest hit with t > 0 of pixel (x, y) of the last cast(), or t = kNoHit.
   RayHit hit(int x, int y) const;
+  // hit() of every pixel of row y, bit for bit. A row's pixels see few surfaces, one after
+  // another: what differs from surface to surface is decided once per run of pixels on one
+  // face, and the loops within a run have no branches (rendering a generated office: 7% less
+  // time than building each pixel's RayHit).
+  void rowSurfaces(int y, RowSurfaces& row) const;
 
   static constexpr double kNearPlaneT = 1e-6;
 

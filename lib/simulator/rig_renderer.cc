@@ -89,60 +89,44 @@ void RigRenderer::traceCamera(const mrpt::poses::CPose3D& optical_pose,
   rays.cx = camera.cx;
   rays.cy = camera.cy;
   ray_caster_.cast(rays);
-  // Sized once and written in place, a row at a time. Built aside and copied in, each pixel's
-  // query stalled on reading back its own just-written bytes behind the divisions of its
-  // footprint, which then ran one pixel after another instead of overlapping.
-  seen_.resize(camera.width);
-  queries_.resize(camera.width);
   for (int y = 0; y < camera.height; ++y) {
+    ray_caster_.rowSurfaces(y, row_);
     float* brightness_row = brightness->ptr<float>(y);
-    float* depth_row = depth ? depth->ptr<float>(y) : nullptr;
-    size_t count = 0;
-    for (int x = 0; x < camera.width; ++x) {
-      const RayHit hit = ray_caster_.hit(x, y);
-      if (depth_row) depth_row[x] = static_cast<float>(hit.t);
-      if (hit.t == kNoHit) {
-        brightness_row[x] = static_cast<float>(gain * kEmptyBrightness);
-        continue;
-      }
-      seen_.add(count, x, hit.surface.position - footprint_viewpoint, hit.surface.normal);
-      AlbedoQuery& query = queries_[count];
-      query.texture = &world_.textures[hit.texture];
-      query.u = hit.surface.u;
-      query.v = hit.surface.v;
-      query.noise_shift = hit.texture_offset;
-      ++count;
+    if (depth) {
+      float* depth_row = depth->ptr<float>(y);
+      for (int x = 0; x < camera.width; ++x) depth_row[x] = static_cast<float>(row_.t[x]);
     }
-    seen_.shade(count, camera.focal_px);
-    for (size_t i = 0; i < count; ++i) queries_[i].footprint_m = seen_.footprint[i];
+    std::fill(brightness_row, brightness_row + camera.width, static_cast<float>(gain * kEmptyBrightness));
+    const size_t count = row_.count;
+    seen_.shade(row_, footprint_viewpoint, camera.focal_px);
     queries_.resize(count);
-    albedo_sampler_.sample(queries_, albedos_);
-    queries_.resize(camera.width);
     for (size_t i = 0; i < count; ++i) {
-      brightness_row[seen_.column[i]] = static_cast<float>(255.0 * gain * seen_.shade_factor[i] * albedos_[i]);
+      queries_[i] = {&world_.textures[row_.texture[i]], row_.u[i], row_.v[i], seen_.footprint[i],
+                     row_.texture_offset[i]};
+    }
+    albedo_sampler_.sample(queries_, albedos_);
+    for (size_t i = 0; i < count; ++i) {
+      brightness_row[row_.column[i]] = static_cast<float>(255.0 * gain * seen_.shade_factor[i] * albedos_[i]);
     }
   }
-}
-
-void RigRenderer::SeenSurfaces::resize(size_t width) {
-  for (auto* values : {&sight_x, &sight_y, &sight_z, &normal_x, &normal_y, &normal_z, &footprint, &shade_factor}) {
-    values->resize(width);
-  }
-  column.resize(width);
 }
 
 // Built for AVX2 as well (chosen at load time): four pixels per square root and division. Not
 // with FMA, whose fused rounding would change the images from one machine to another.
 __attribute__((target_clones("avx2", "default")))
-void RigRenderer::SeenSurfaces::shade(size_t count, double focal_px) {
-  const double* __restrict sx = sight_x.data();
-  const double* __restrict sy = sight_y.data();
-  const double* __restrict sz = sight_z.data();
-  const double* __restrict nx = normal_x.data();
-  const double* __restrict ny = normal_y.data();
-  const double* __restrict nz = normal_z.data();
+void RigRenderer::SeenSurfaces::shade(const RowSurfaces& row, const Eigen::Vector3d& viewpoint, double focal_px) {
+  const size_t count = row.count;
+  footprint.resize(row.x.size());
+  shade_factor.resize(row.x.size());
+  const double* __restrict px = row.x.data();
+  const double* __restrict py = row.y.data();
+  const double* __restrict pz = row.z.data();
+  const double* __restrict nx = row.normal_x.data();
+  const double* __restrict ny = row.normal_y.data();
+  const double* __restrict nz = row.normal_z.data();
   double* __restrict footprints = footprint.data();
   double* __restrict shades = shade_factor.data();
+  const double vx = viewpoint.x(), vy = viewpoint.y(), vz = viewpoint.z();
   const double light_x = kLightDirection.x(), light_y = kLightDirection.y(), light_z = kLightDirection.z();
   // A value, not the constant itself: std::max of a reference to a global is a load the loop
   // could not do four at a time.
@@ -150,8 +134,9 @@ void RigRenderer::SeenSurfaces::shade(size_t count, double focal_px) {
   for (size_t i = 0; i < count; ++i) {
     // Pixel footprint on the surface: distance / f, stretched by the obliquity of the view. The
     // sums run in the order of Eigen's norm() and dot(), which this loop replaced bit for bit.
-    const double distance = std::sqrt(sx[i] * sx[i] + sy[i] * sy[i] + sz[i] * sz[i]);
-    const double facing = std::max(std::abs(nx[i] * sx[i] + ny[i] * sy[i] + nz[i] * sz[i]) / distance, minimum_cosine);
+    const double sight_x = px[i] - vx, sight_y = py[i] - vy, sight_z = pz[i] - vz;
+    const double distance = std::sqrt(sight_x * sight_x + sight_y * sight_y + sight_z * sight_z);
+    const double facing = std::max(std::abs(nx[i] * sight_x + ny[i] * sight_y + nz[i] * sight_z) / distance, minimum_cosine);
     footprints[i] = distance / (focal_px * facing);
   }
   // A loop of its own: GCC 12 vectorizes neither when they share one.

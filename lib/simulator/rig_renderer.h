@@ -66,25 +66,14 @@ class RigRenderer {
   SensorOptions sensor_;
   RayCaster ray_caster_;
   cv::RNG noise_;
-  // The pixels of a camera row that see a surface, as arrays that vector instructions fill: the
-  // line of sight to each (from the footprint viewpoint), its surface normal, and from these its
-  // footprint and Lambertian shading.
+  // The pixels of a camera row that see a surface (RayCaster::rowSurfaces), and from their lines
+  // of sight (from the footprint viewpoint) and normals, their footprints and Lambertian shading.
+  RowSurfaces row_;
   struct SeenSurfaces {
-    std::vector<int> column;
-    std::vector<double> sight_x, sight_y, sight_z, normal_x, normal_y, normal_z, footprint, shade_factor;
+    std::vector<double> footprint, shade_factor;
 
-    void resize(size_t width);
-    void add(size_t i, int x, const Eigen::Vector3d& sight, const Eigen::Vector3d& normal) {
-      column[i] = x;
-      sight_x[i] = sight.x();
-      sight_y[i] = sight.y();
-      sight_z[i] = sight.z();
-      normal_x[i] = normal.x();
-      normal_y[i] = normal.y();
-      normal_z[i] = normal.z();
-    }
-    // footprint and shade_factor of the first `count`.
-    void shade(size_t count, double focal_px);
+    // footprint and shade_factor of row.count surfaces.
+    void shade(const RowSurfaces& row, const Eigen::Vector3d& viewpoint, double focal_px);
   };
   SeenSurfaces seen_;
   AlbedoSampler albedo_sampler_;
