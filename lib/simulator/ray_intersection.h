@@ -48,8 +48,9 @@ struct SurfacePoint {
 // Side faces: v is the height above the floor and u the horizontal distance from the middle of the
 // face, increasing to the right as seen from the front (box faces), or the arc length
 // counter-clockwise from the solid's +x direction (cylinders). Top and bottom faces: u, v are
-// x, y relative to the solid's centre, along the world axes. Inline: the renderer calls it for
-// every pixel that sees a solid.
+// x, y relative to the solid's centre, along the world axes. The reference for
+// RayCaster::rowSurfaces (ray_caster.cc), which computes the same for a run of pixels on one face:
+// a change here must be made there too, or the caster's tests of rows against hit() fail.
 inline SurfacePoint surfaceOfSolid(const Solid& solid, int face, const Ray& ray, double t) {
   SurfacePoint point;
   point.position = ray.origin + t * ray.direction;
