@@ -172,7 +172,12 @@ VelocityCommand FrontierExplorer::decide(const mrpt::poses::CPose2D& pose, doubl
     finish("the robot is outside its own map");
     return {};
   }
-  if (!field_->traversable(col, row)) return escape(pose, col, row);
+  if (!field_->traversable(col, row)) {
+    const std::optional<cv::Point> beside = besideThePlan(pose, col, row);
+    if (!beside) return escape(pose, col, row);
+    col = beside->x;
+    row = beside->y;
+  }
   if (status_.phase == ExplorerPhase::kEscaping) status_.phase = ExplorerPhase::kTurning;
   escape_to_.reset();
   failed_escapes_.clear();
@@ -208,6 +213,26 @@ VelocityCommand FrontierExplorer::decide(const mrpt::poses::CPose2D& pose, doubl
   status_.phase = drive.driving ? ExplorerPhase::kDriving : ExplorerPhase::kTurning;
   path_end_m_ = drive.path_length_m;
   return drive.command;
+}
+
+std::optional<cv::Point> FrontierExplorer::besideThePlan(const mrpt::poses::CPose2D& pose, int col, int row) const {
+  // A door a few centimetres wider than the body with its margin is one or two cells of plan
+  // wide, and a robot heading into it cuts the corner of its first cell by a few centimetres: an
+  // escape back out of the door, and again at each attempt (ini/worlds/door_080.ini).
+  if (grid_->clearanceAt(pose.x(), pose.y(), options_.robot_radius_m) < options_.robot_radius_m) return std::nullopt;
+  std::optional<cv::Point> nearest;
+  double nearest_m = std::numeric_limits<double>::infinity();
+  for (int r = row - 1; r <= row + 1; ++r) {
+    for (int c = col - 1; c <= col + 1; ++c) {
+      if (!field_->traversable(c, r)) continue;
+      const double distance = std::hypot(grid_->centreX(c) - pose.x(), grid_->centreY(r) - pose.y());
+      if (distance < nearest_m) {
+        nearest_m = distance;
+        nearest = cv::Point(c, r);
+      }
+    }
+  }
+  return nearest;
 }
 
 VelocityCommand FrontierExplorer::escape(const mrpt::poses::CPose2D& pose, int col, int row) {

@@ -72,6 +72,9 @@ class FrontierExplorer {
                           mrpt::nav::CRobot2NavInterface& robot);
   VelocityCommand decide(const mrpt::poses::CPose2D& pose, double time_s);
   VelocityCommand escape(const mrpt::poses::CPose2D& pose, int col, int row);
+  // Where a robot whose own cell the plan does not let it stand in may plan from instead of
+  // escaping: the traversable cell beside it nearest its position, if its bare body fits where it is.
+  std::optional<cv::Point> besideThePlan(const mrpt::poses::CPose2D& pose, int col, int row) const;
   // Plans where the bare body fits, without the safety margin, until the next frontier is
   // reached; the guard still keeps the robot off what the scans show. False when planning is
   // relaxed already or there is no margin to drop.

@@ -188,6 +188,23 @@ bool NavigationGrid::mapHoldsObstacle(double x, double y) const {
   return cellAt(x, y, col, row) && sure_obstacle_(row, col) != 0;
 }
 
+double NavigationGrid::clearanceAt(double x, double y, double search_m) const {
+  int centre_col = 0, centre_row = 0;
+  cellAt(x, y, centre_col, centre_row);
+  const int reach = static_cast<int>(std::ceil(search_m / frame_.resolution)) + 1;
+  const double half = 0.5 * frame_.resolution;
+  double nearest = search_m;
+  for (int row = centre_row - reach; row <= centre_row + reach; ++row) {
+    for (int col = centre_col - reach; col <= centre_col + reach; ++col) {
+      if (contains(col, row) && cell_class_(row, col) == kFree) continue;
+      const double dx = std::max(0.0, std::abs(x - centreX(col)) - half);
+      const double dy = std::max(0.0, std::abs(y - centreY(row)) - half);
+      nearest = std::min(nearest, std::hypot(dx, dy));
+    }
+  }
+  return nearest;
+}
+
 bool NavigationGrid::cellAt(double x, double y, int& col, int& row) const {
   col = static_cast<int>(std::floor((x - frame_.origin_x) / frame_.resolution));
   row = static_cast<int>(std::floor((y - frame_.origin_y) / frame_.resolution));

@@ -83,6 +83,9 @@ class NavigationGrid {
   // Exact up to the options' distance_horizon_m, at least that beyond; -half a cell at cells that
   // are not free.
   float clearance(int col, int row) const { return clearance_m_(row, col); }
+  // The same from the point (x, y) itself, not its cell's centre, looked for up to `search_m`
+  // (which it returns when nothing is nearer); cells off the grid count as not free.
+  double clearanceAt(double x, double y, double search_m) const;
   // The same to the nearest occupied or imprecise cell only (the potential field's repulsion). At
   // free cells it is exact up to the options' distance_horizon_m and at least that beyond; at
   // occupied and imprecise cells it is -half a cell.

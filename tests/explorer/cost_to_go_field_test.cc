@@ -93,16 +93,25 @@ TEST(CostToGoFieldTest, DoorNarrowerThanTheInflatedBodyIsClosed) {
     walled.occupied(20, 0, 20, 39).free(20, 15, 20, 15 + cells_wide - 1);
     return walled;
   };
-  // Body radius 0.25: the door's middle cell centre must be 0.25 from both jambs, so 0.5 m of
-  // door is needed (5 cells: the middle centre is exactly 0.25 from each side).
-  const TestGrid narrow = with_door(4);
-  EXPECT_TRUE(planPath(NavigationGrid(narrow.grid(), {}, NavigationGridOptions{}), plainOptions(0.25), 1.05, 1.55, 3.05, 1.55).empty());
-  const TestGrid wide = with_door(5);
-  const auto path = planPath(NavigationGrid(wide.grid(), {}, NavigationGridOptions{}), plainOptions(0.25), 1.05, 1.55, 3.05, 1.55);
-  ASSERT_FALSE(path.empty());
-  for (const cv::Point2d& p : path) {
-    if (p.x > 1.9 && p.x < 2.2) {
-      EXPECT_NEAR(p.y, 1.75, 1e-9) << "through the door's middle";
+  // The door's middle cell centre must be the body radius from both jambs: 2 r of door (an odd
+  // number of cells, the middle centre exactly r from each side) opens it, a cell less does not.
+  // 0.35 is the shipped robot's radius with its margin.
+  for (const double radius : {0.15, 0.25, 0.35, 0.45}) {
+    const int fitting_cells = static_cast<int>(std::lround(2.0 * radius / 0.1));
+    const TestGrid narrow = with_door(fitting_cells - 1);
+    EXPECT_TRUE(planPath(NavigationGrid(narrow.grid(), {}, NavigationGridOptions{}), plainOptions(radius), 1.05, 1.55,
+                         3.05, 1.55)
+                    .empty())
+        << "radius " << radius;
+    const TestGrid wide = with_door(fitting_cells);
+    const auto path =
+        planPath(NavigationGrid(wide.grid(), {}, NavigationGridOptions{}), plainOptions(radius), 1.05, 1.55, 3.05, 1.55);
+    ASSERT_FALSE(path.empty()) << "radius " << radius;
+    const double middle = 1.5 + 0.1 * fitting_cells / 2.0;
+    for (const cv::Point2d& p : path) {
+      if (p.x > 1.9 && p.x < 2.2) {
+        EXPECT_NEAR(p.y, middle, 1e-9) << "through the door's middle, radius " << radius;
+      }
     }
   }
 }

@@ -157,6 +157,47 @@ TEST(FrontierExplorerTest, LooksFromTheNearestPlaceItReachesAtAFrontierBeyondADo
       << explorer.stopReason() << " " << phaseName(explorer.status().phase) << " " << robot.pose_.asString();
 }
 
+// Walled area, east wall at x = 5.0 with a door of 0.7 m (y 1.7 .. 2.4) and free floor beyond it to
+// x = 6.1, then unknown. With the shipped margin (0.05) the body needs 0.35 m from both jambs:
+// one row of cells (y 2.0 .. 2.1) plans through the door.
+TestGrid doorOneCellOfPlanWide() {
+  TestGrid cells(70, 40);
+  cells.occupied(0, 0, 60, 39).free(1, 1, 49, 38).free(50, 17, 60, 23).free(51, 1, 60, 38).unknown(61, 1, 61, 38);
+  return cells;
+}
+
+TEST(FrontierExplorerTest, ARobotAFewCentimetresOffAOneCellPlanThroughADoorDrivesOnWhereItsBodyFits) {
+  ExplorerOptions options = testOptions();
+  options.safety_margin_m = 0.05;
+  const TestGrid cells = doorOneCellOfPlanWide();
+  // Heading east 0.15 m below the plan's row, it is a millimetre short of that row at x = 4.81:
+  // in a cell whose centre is 0.29 m from the jamb, though the robot itself is 0.35 m from the
+  // jamb's corner at (5.0, 1.7). Judged by its cell it escaped and never went through.
+  {
+    FrontierExplorer explorer(options);
+    KinematicRobot robot({4.5, 1.9, 0.0});
+    bool escaped = false;
+    double farthest_east = 0.0;
+    for (int steps = 0; steps < 400 && !explorer.finished(); ++steps) {
+      if (steps % 4 == 0) explorer.updateMap(cells.grid(), mrpt::poses::CPose2D(robot.pose_));  // 5 Hz
+      if (!explorer.controlStep(robot)) break;
+      robot.step(0.05);
+      escaped |= explorer.status().phase == ExplorerPhase::kEscaping;
+      farthest_east = std::max(farthest_east, robot.pose_.x);
+    }
+    EXPECT_FALSE(escaped);
+    EXPECT_GT(farthest_east, 5.5) << robot.pose_.asString();
+  }
+  // Nearer the jamb (0.22 m from its corner) not even the bare body fits: it escapes.
+  {
+    FrontierExplorer explorer(options);
+    KinematicRobot robot({4.94, 1.91, 0.0});
+    explorer.updateMap(cells.grid(), mrpt::poses::CPose2D(robot.pose_));
+    ASSERT_TRUE(explorer.controlStep(robot));
+    EXPECT_EQ(explorer.status().phase, ExplorerPhase::kEscaping);
+  }
+}
+
 TEST(FrontierExplorerTest, BeforeEndingItTriesEveryFrontierItGaveUpOnceMore) {
   // The door too narrow: looked at from the nearest place the body reaches, its frontier is given
   // up, and one look around there (2 pi) ends the first pass. Once the robot has turned more than
@@ -384,15 +425,17 @@ TEST(FrontierExplorerTest, BrakesForWhatOnlyTheSensorShowsAndThenPlansRoundIt) {
 TEST(FrontierExplorerTest, HeldByWhatItSeesAheadItDoesNotReverseIntoAWallBehind) {
   // Backed up to the west wall (its cells end at x = 0.1; the body's back is at 0.15), facing
   // east, and a post the sensor sees 0.5 m ahead holds it: the cameras do not see behind, the
-  // map does, so it must not back off into the wall (it turns on the spot instead).
+  // map does, so it must not back off into the wall (it turns on the spot instead). The map is
+  // given once: a new one would hold the post the guard remembers, and the plan would turn away
+  // from it before the robot is found blocked.
   const TestGrid cells = openToTheEast();
   FrontierExplorer explorer(testOptions());
   KinematicRobot robot({0.45, 2.0, 0.0});
   for (double y = 1.8; y <= 2.2 + 1e-9; y += 0.05) robot.sensed_.emplace_back(0.95, y);
   double westmost = robot.pose_.x;
   int backing_off = 0;
+  explorer.updateMap(cells.grid(), mrpt::poses::CPose2D(robot.pose_));
   for (int i = 0; i < 200; ++i) {
-    if (i % 4 == 0) explorer.updateMap(cells.grid(), mrpt::poses::CPose2D(robot.pose_));  // 5 Hz
     if (!explorer.controlStep(robot)) break;
     backing_off += explorer.status().phase == ExplorerPhase::kBackingOff ? 1 : 0;
     robot.step(0.05);

@@ -73,6 +73,23 @@ TEST(NavigationGridTest, ClearanceIsTheDistanceToTheNearestCellThatIsNotFree) {
   EXPECT_NEAR(grid.clearance(10, 10), -0.05, 1e-6);  // blocked cells have no clearance
 }
 
+TEST(NavigationGridTest, ClearanceAtAPointIsItsDistanceToTheNearestBlockedCellsSquare) {
+  TestGrid cells(20, 20);
+  cells.free(0, 0, 19, 19).occupied(10, 0, 10, 9);  // a wall x in [1.0, 1.1], y in [0, 1.0], open above
+  const NavigationGrid grid(cells.grid(), {}, NavigationGridOptions{});
+  // Beside the wall: its face at x = 1.0, whatever cell the point is in.
+  EXPECT_NEAR(grid.clearanceAt(0.73, 0.5, 1.0), 0.27, 1e-9);
+  EXPECT_NEAR(grid.clearanceAt(0.77, 0.5, 1.0), 0.23, 1e-9);
+  // Above the wall's end: to its corner at (1.0, 1.0) (3-4-5), and straight down to its top.
+  EXPECT_NEAR(grid.clearanceAt(0.7, 1.4, 1.0), 0.5, 1e-9);
+  EXPECT_NEAR(grid.clearanceAt(1.05, 1.3, 1.0), 0.3, 1e-9);
+  // The grid's edge counts as blocked, and nothing within the search gives the search.
+  EXPECT_NEAR(grid.clearanceAt(0.12, 1.5, 1.0), 0.12, 1e-9);
+  EXPECT_NEAR(grid.clearanceAt(1.6, 1.6, 0.2), 0.2, 1e-9);
+  // Inside a blocked cell: none.
+  EXPECT_NEAR(grid.clearanceAt(1.05, 0.5, 1.0), 0.0, 1e-9);
+}
+
 TEST(NavigationGridTest, ClearanceOfFreePatchesInUnknownCountsUnknownAndTheGridEdgeAsBlocked) {
   TestGrid cells(40, 40);  // unknown but for two patches of free floor, 0.1 m cells
   cells.free(10, 5, 19, 8).free(0, 36, 3, 39);
