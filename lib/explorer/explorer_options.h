@@ -129,8 +129,9 @@ struct ExplorerOptions {
   // K = 20 (paper section 3.4), twelve frames at 5 Hz. A frontier that resolves sooner ends the
   // look at once (the next plan has another target).
   double look_hold_s = 2.4;
-  // Within this much path of its goal the robot has arrived: it turns to look rather than creep
-  // cell by cell along the goal region's edge as the frontier recedes.
+  // Within this much cost-to-go of its goal the robot has arrived: it turns to look rather than
+  // creep cell by cell along the goal region's edge as the frontier recedes. The cost is path
+  // plus the potential field's repulsion, so beside a wall it is reached only nearer the goal.
   double arrived_m = 0.4;
   // Progress: the cost-to-go must drop by progress_m within stuck_timeout_s.
   double progress_m = 0.3;
