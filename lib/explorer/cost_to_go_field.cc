@@ -6,15 +6,6 @@
 #include <stdexcept>
 
 namespace stereonav {
-namespace {
-
-// Clearances are whole cells less half a cell, held as floats: 4 x 0.1 - 0.05 comes out a few
-// parts in a billion below 0.35, and a body that fits a gap exactly (the shipped 0.35 m from both
-// jambs) was refused, so that a door had to be mapped a whole cell wider than the body needs.
-constexpr double kClearanceRounding_m = 1e-6;
-
-}  // namespace
-
 CostToGoField::CostToGoField(const NavigationGrid& grid, const CostToGoOptions& options)
     : grid_(grid),
       box_(grid.freeCells()),
@@ -27,7 +18,7 @@ CostToGoField::CostToGoField(const NavigationGrid& grid, const CostToGoOptions& 
   for (int row = 0; row < box_.height; ++row) {
     for (int col = 0; col < box_.width; ++col) {
       const int grid_col = box_.x + col, grid_row = box_.y + row;
-      traversable_(row, col) = grid.clearance(grid_col, grid_row) + kClearanceRounding_m >= options.body_radius_m ? 1 : 0;
+      traversable_(row, col) = grid.fits(grid_col, grid_row, options.body_radius_m) ? 1 : 0;
       // Steps are taken between traversable cells only.
       if (!traversable_(row, col) || options.repulsion_distance_m <= 0.0) continue;
       const double beyond = grid.obstacleDistance(grid_col, grid_row) - options.body_radius_m;

@@ -100,7 +100,7 @@ bool MotionController::roomBehind(const mrpt::poses::CPose2D& pose, const Naviga
   for (double along = grid.resolution(); along <= back + 1e-9; along += grid.resolution()) {
     const double x = pose.x() - along * std::cos(pose.phi()), y = pose.y() - along * std::sin(pose.phi());
     int col = 0, row = 0;
-    if (!grid.cellAt(x, y, col, row) || grid.clearance(col, row) < options_.robot_radius_m) return false;
+    if (!grid.cellAt(x, y, col, row) || !grid.fits(col, row, options_.robot_radius_m)) return false;
   }
   return true;
 }

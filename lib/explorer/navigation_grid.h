@@ -83,6 +83,10 @@ class NavigationGrid {
   // Exact up to the options' distance_horizon_m, at least that beyond; -half a cell at cells that
   // are not free.
   float clearance(int col, int row) const { return clearance_m_(row, col); }
+  // Whether a disc of `radius_m` at the cell's centre overlaps free cells only. Clearances are
+  // whole cells less half a cell, held as floats (4 x 0.1 - 0.05 comes out a few parts in a
+  // billion below 0.35): a body that fits a gap exactly is not refused by that rounding.
+  bool fits(int col, int row, double radius_m) const { return clearance(col, row) + 1e-6 >= radius_m; }
   // The same from the point (x, y) itself, not its cell's centre, looked for up to `search_m`
   // (which it returns when nothing is nearer); cells off the grid count as not free.
   double clearanceAt(double x, double y, double search_m) const;
