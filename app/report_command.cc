@@ -3,8 +3,10 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
+#include "closed_loop/path_scan_accuracy.h"
 #include "command_line.h"
 #include "commands.h"
 #include "common/atomic_file.h"
@@ -19,13 +21,17 @@ namespace {
 
 constexpr const char* kUsage =
     "usage: stereonav report --config C.ini --world W.ini --explore PREFIX --rawlog R.rawlog --out DIR\n"
-    "                        [--panels N]\n"
+    "                        [--panels N] [--scan-truth-every N]\n"
     "Makes a page of an exploration run by 'stereonav explore --config C.ini --world W.ini --out PREFIX\n"
     "--record R.rawlog': replays R.rawlog through the same mapping pipeline to measure the coverage of\n"
     "the reachable free floor as the map grew, and writes DIR/index.html (the map with the path, the\n"
     "explorer's last plan, the coverage curve, N debug panels spread over the run; default 4),\n"
     "DIR/coverage.csv ('t,coverage,seen_coverage', one line per simulated second), DIR/panels/ and\n"
-    "the replayed map DIR/map.{png,yaml,pgm,gridmap,3Dscene,stats.json}.\n";
+    "the replayed map DIR/map.{png,yaml,pgm,gridmap,3Dscene,stats.json}. Every N-th frame (default 5;\n"
+    "0: none) is also rendered again at its true pose and its stereo scan compared with the scan of the\n"
+    "renderer's exact disparity: the share of columns that agree, that read an obstacle nearer than\n"
+    "anything there (within 2 m: what the guard brakes for) and that miss an obstacle within 2 m, on the\n"
+    "page and in DIR/scan_accuracy.json.\n";
 
 std::string percent(double fraction) {
   std::ostringstream text;
@@ -47,6 +53,7 @@ int runReportCommand(const std::vector<std::string>& arguments) {
   const std::string rawlog_path = command_line.required("rawlog");
   const std::string out = command_line.required("out");
   const int panels = command_line.intValue("panels", 0, 100).value_or(4);
+  const int scan_truth_every = command_line.intValue("scan-truth-every", 0, 1000000).value_or(5);
   command_line.rejectUnknown();
   if (panels < 0) throw UsageError("--panels: must not be negative");
 
@@ -69,6 +76,14 @@ int runReportCommand(const std::vector<std::string>& arguments) {
   std::cerr << "stereonav report: replaying " << frames << " frames of " << rawlog_path << "\n";
   const std::vector<CoverageSample> coverage = replayCoverage(config, world, job);
   writeStringAtomically(out + "/coverage.csv", coverageCsv(coverage));
+  std::optional<ScanAccuracy> scan_accuracy;
+  if (scan_truth_every > 0) {
+    std::cerr << "stereonav report: rendering one frame in " << scan_truth_every << " again to compare its stereo scan with the truth\n";
+    scan_accuracy = scanAccuracyAlongPath(config, world, loadPoseList(SimulationRecorder::groundTruthPath(rawlog_path)),
+                                          static_cast<size_t>(scan_truth_every), ScanAccuracyOptions{});
+    writeStringAtomically(out + "/scan_accuracy.json", scan_accuracy->toJson() + "\n");
+    std::cerr << "stereonav report: stereo scans against the truth: " << scan_accuracy->toText() << "\n";
+  }
   fs::copy_file(explore_prefix + ".path.png", out + "/path.png", fs::copy_options::overwrite_existing);
   fs::copy_file(explore_prefix + ".plan.png", out + "/plan.png", fs::copy_options::overwrite_existing);
 
@@ -80,6 +95,7 @@ int runReportCommand(const std::vector<std::string>& arguments) {
                 {"coverage at the end (reachable free floor mapped free)", percent(coverage.back().coverage)},
                 {"seen at the end (mapped at all)", percent(coverage.back().seen_coverage)},
                 {"run statistics", explore_prefix + ".stats.json"}};
+  if (scan_accuracy) page.facts.emplace_back("stereo scans against the truth", scan_accuracy->toText());
   page.images = {{"the map with the robot's path (green start, blue end)", "path.png"},
                  {"the explorer's last plan", "plan.png"}};
   page.coverage = coverage;

@@ -1,0 +1,83 @@
+#include "evaluation/scan_accuracy.h"
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+#include <stdexcept>
+
+namespace stereonav {
+namespace {
+
+// Distance on the floor from the robot's centre to what column x reads at row y and disparity d.
+double floorRange(const CameraRig& rig, int x, int y, double disparity) {
+  const mrpt::math::TVector3D ray = rig.rayOnRobot(x, y);
+  const double depth = rig.depthForDisparity(disparity);
+  return std::hypot(rig.pose_on_robot.x() + depth * ray.x, rig.pose_on_robot.y() + depth * ray.y);
+}
+
+double share(size_t part, size_t whole) { return whole == 0 ? 0.0 : static_cast<double>(part) / whole; }
+
+}  // namespace
+
+ScanAccuracy& ScanAccuracy::operator+=(const ScanAccuracy& other) {
+  frames += other.frames;
+  columns += other.columns;
+  read += other.read;
+  agreeing += other.agreeing;
+  phantoms += other.phantoms;
+  close_phantoms += other.close_phantoms;
+  close_obstacles += other.close_obstacles;
+  close_misses += other.close_misses;
+  return *this;
+}
+
+std::string ScanAccuracy::toText() const {
+  std::ostringstream text;
+  text << std::fixed << std::setprecision(2) << frames << " frames, " << 100.0 * share(read, columns)
+       << "% of columns read; of them " << 100.0 * share(agreeing, read) << "% agree with the truth, "
+       << 100.0 * share(phantoms, read) << "% read nearer than anything there (" << 100.0 * share(close_phantoms, read)
+       << "% within reach); " << 100.0 * share(close_misses, close_obstacles)
+       << "% of the columns with an obstacle within reach read it farther or not at all";
+  return text.str();
+}
+
+std::string ScanAccuracy::toJson() const {
+  std::ostringstream json;
+  json << "{\"frames\": " << frames << ", \"columns\": " << columns << ", \"read\": " << read
+       << ", \"agreeing\": " << agreeing << ", \"phantoms\": " << phantoms << ", \"close_phantoms\": " << close_phantoms
+       << ", \"close_obstacles\": " << close_obstacles << ", \"close_misses\": " << close_misses << "}";
+  return json.str();
+}
+
+ScanAccuracy compareScans(const DisparityScan& measured, const DisparityScan& truth, const CameraRig& rig,
+                          const ScanAccuracyOptions& options) {
+  if (measured.columns() != truth.columns()) {
+    throw std::invalid_argument("scans of " + std::to_string(measured.columns()) + " and " +
+                                std::to_string(truth.columns()) + " columns");
+  }
+  ScanAccuracy accuracy;
+  accuracy.frames = 1;
+  accuracy.columns = static_cast<size_t>(measured.columns());
+  for (int x = 0; x < measured.columns(); ++x) {
+    // Where the truth sees nothing in the body volume, any reading is nearer than what is there.
+    const double true_disparity = truth.valid(x) ? truth.column_disparity[x] : 0.0;
+    const bool close_obstacle =
+        truth.valid(x) && floorRange(rig, x, truth.column_row[x], true_disparity) <= options.close_range_m;
+    accuracy.close_obstacles += close_obstacle ? 1 : 0;
+    if (!measured.valid(x)) {
+      accuracy.close_misses += close_obstacle ? 1 : 0;
+      continue;
+    }
+    const double disparity = measured.column_disparity[x];
+    ++accuracy.read;
+    accuracy.agreeing += truth.valid(x) && std::abs(disparity - true_disparity) <= options.agree_px ? 1 : 0;
+    if (disparity > true_disparity + options.wrong_px) {
+      ++accuracy.phantoms;
+      accuracy.close_phantoms += floorRange(rig, x, measured.column_row[x], disparity) <= options.close_range_m ? 1 : 0;
+    }
+    accuracy.close_misses += close_obstacle && disparity < true_disparity - options.wrong_px ? 1 : 0;
+  }
+  return accuracy;
+}
+
+}  // namespace stereonav
