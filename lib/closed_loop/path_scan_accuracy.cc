@@ -1,5 +1,6 @@
 #include "closed_loop/path_scan_accuracy.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "column_projection/column_projector.h"
@@ -20,6 +21,8 @@ ScanAccuracy scanAccuracyAlongPath(const ExplorationConfig& config, const World&
   const MappingOptions& mapping = config.mapping;
   DisparityScanner scanner(rig, mapping.stereo, mapping.spike_removal, mapping.projection);
   const ColumnProjector truth_projector(rig, mapping.projection);
+  ScanAccuracyOptions searched = options;
+  searched.max_disparity = std::min(options.max_disparity, static_cast<double>(mapping.stereo.max_disparity));
   StageTimes times;
   ScanAccuracy accuracy;
   for (size_t frame = 0; frame < poses.size(); frame += every) {
@@ -30,7 +33,7 @@ ScanAccuracy scanAccuracyAlongPath(const ExplorationConfig& config, const World&
     rig_frame.rig = rig;
     rig_frame.secondaries.assign(images.secondaries.begin(), images.secondaries.end());
     const DisparityScan& measured = scanner.scan(rig_frame, times);
-    accuracy += compareScans(measured, truth_projector.project(images.true_disparity), rig, options);
+    accuracy += compareScans(measured, truth_projector.project(images.true_disparity), rig, searched);
   }
   return accuracy;
 }

@@ -26,6 +26,7 @@ ScanAccuracy& ScanAccuracy::operator+=(const ScanAccuracy& other) {
   agreeing += other.agreeing;
   phantoms += other.phantoms;
   close_phantoms += other.close_phantoms;
+  too_near += other.too_near;
   close_obstacles += other.close_obstacles;
   close_misses += other.close_misses;
   return *this;
@@ -37,7 +38,8 @@ std::string ScanAccuracy::toText() const {
        << "% of columns read; of them " << 100.0 * share(agreeing, read) << "% agree with the truth, "
        << 100.0 * share(phantoms, read) << "% read nearer than anything there (" << 100.0 * share(close_phantoms, read)
        << "% within reach); " << 100.0 * share(close_misses, close_obstacles)
-       << "% of the columns with an obstacle within reach read it farther or not at all";
+       << "% of the columns with an obstacle within reach read it farther or not at all, and "
+       << 100.0 * share(too_near, columns) << "% see one nearer than the matcher searches";
   return text.str();
 }
 
@@ -45,7 +47,7 @@ std::string ScanAccuracy::toJson() const {
   std::ostringstream json;
   json << "{\"frames\": " << frames << ", \"columns\": " << columns << ", \"read\": " << read
        << ", \"agreeing\": " << agreeing << ", \"phantoms\": " << phantoms << ", \"close_phantoms\": " << close_phantoms
-       << ", \"close_obstacles\": " << close_obstacles << ", \"close_misses\": " << close_misses << "}";
+       << ", \"too_near\": " << too_near << ", \"close_obstacles\": " << close_obstacles << ", \"close_misses\": " << close_misses << "}";
   return json.str();
 }
 
@@ -61,8 +63,10 @@ ScanAccuracy compareScans(const DisparityScan& measured, const DisparityScan& tr
   for (int x = 0; x < measured.columns(); ++x) {
     // Where the truth sees nothing in the body volume, any reading is nearer than what is there.
     const double true_disparity = truth.valid(x) ? truth.column_disparity[x] : 0.0;
-    const bool close_obstacle =
-        truth.valid(x) && floorRange(rig, x, truth.column_row[x], true_disparity) <= options.close_range_m;
+    const bool too_near = truth.valid(x) && true_disparity > options.max_disparity;
+    const bool close_obstacle = truth.valid(x) && !too_near &&
+                                floorRange(rig, x, truth.column_row[x], true_disparity) <= options.close_range_m;
+    accuracy.too_near += too_near ? 1 : 0;
     accuracy.close_obstacles += close_obstacle ? 1 : 0;
     if (!measured.valid(x)) {
       accuracy.close_misses += close_obstacle ? 1 : 0;

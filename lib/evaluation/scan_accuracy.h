@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstddef>
+#include <limits>
 #include <string>
 
 #include "column_projection/disparity_scan.h"
@@ -19,6 +20,9 @@ struct ScanAccuracyOptions {
   double wrong_px = 1.5;       // nearer (farther) than the truth by more than this: a phantom (a miss)
   double close_range_m = 2.0;  // on the floor from the robot's centre: where the guard and the
                                // obstacle memory act, counted apart
+  // The largest disparity the matcher searches: a column whose truth is nearer cannot be read,
+  // and is counted as too near rather than as a miss.
+  double max_disparity = std::numeric_limits<double>::infinity();
 };
 
 struct ScanAccuracy {
@@ -28,7 +32,8 @@ struct ScanAccuracy {
   size_t agreeing = 0;         // read, within agree_px of the truth's column
   size_t phantoms = 0;         // read nearer than the truth's column, or where it sees nothing
   size_t close_phantoms = 0;   // of them, read within close_range_m
-  size_t close_obstacles = 0;  // columns whose truth is an obstacle within close_range_m
+  size_t too_near = 0;         // columns whose truth is nearer than max_disparity reaches
+  size_t close_obstacles = 0;  // columns whose truth is an obstacle within close_range_m, not too near
   size_t close_misses = 0;     // of them, read farther than the truth, or not at all
 
   ScanAccuracy& operator+=(const ScanAccuracy& other);
