@@ -78,7 +78,8 @@ int runReportCommand(const std::vector<std::string>& arguments) {
   writeStringAtomically(out + "/coverage.csv", coverageCsv(coverage));
   std::optional<ScanAccuracy> scan_accuracy;
   if (scan_truth_every > 0) {
-    std::cerr << "stereonav report: rendering one frame in " << scan_truth_every << " again to compare its stereo scan with the truth\n";
+    std::cerr << "stereonav report: rendering one frame in " << scan_truth_every
+              << " again to compare its stereo scan with the truth\n";
     scan_accuracy = scanAccuracyAlongPath(config, world, loadPoseList(SimulationRecorder::groundTruthPath(rawlog_path)),
                                           static_cast<size_t>(scan_truth_every), ScanAccuracyOptions{});
     writeStringAtomically(out + "/scan_accuracy.json", scan_accuracy->toJson() + "\n");

@@ -15,7 +15,8 @@ namespace stereonav {
 // `world`, each against the scan of the renderer's exact disparity: every `every`-th frame is
 // rendered afresh (the same views as the run's, with fresh sensor noise), matched and projected
 // as the mapping pipeline does, and compared (compareScans), truth beyond the configured stereo
-// max_disparity counted as too near. Moving obstacles stand where they start. Throws std::invalid_argument if `every` is 0.
+// max_disparity counted as too near. Moving obstacles stand where they start. Throws
+// std::invalid_argument if `every` is 0.
 ScanAccuracy scanAccuracyAlongPath(const ExplorationConfig& config, const World& world,
                                    const std::vector<mrpt::poses::CPose2D>& poses, size_t every,
                                    const ScanAccuracyOptions& options);

@@ -47,7 +47,8 @@ std::string ScanAccuracy::toJson() const {
   std::ostringstream json;
   json << "{\"frames\": " << frames << ", \"columns\": " << columns << ", \"read\": " << read
        << ", \"agreeing\": " << agreeing << ", \"phantoms\": " << phantoms << ", \"close_phantoms\": " << close_phantoms
-       << ", \"too_near\": " << too_near << ", \"close_obstacles\": " << close_obstacles << ", \"close_misses\": " << close_misses << "}";
+       << ", \"too_near\": " << too_near << ", \"close_obstacles\": " << close_obstacles
+       << ", \"close_misses\": " << close_misses << "}";
   return json.str();
 }
 
