@@ -2,40 +2,19 @@
 // in a corridor whose end wall is textured or flat-painted.
 #include "closed_loop/path_scan_accuracy.h"
 
-#include <mrpt/config/CConfigFileMemory.h>
-
 #include <gtest/gtest.h>
 
 #include <stdexcept>
 #include <string>
 
-#include "simulator/world_loader.h"
+#include "corridor_world.h"
 #include "shipped_config.h"
 
 namespace stereonav {
 namespace {
 
-// A corridor 1.6 m wide from x = 0 to an end wall at x = 5 (its face at x = 4.95), textured sides.
-World corridorEndingIn(const std::string& end_texture) {
-  const std::string corridor = R"(
-[world]
-start_pose = 0.8 0.8 0
-ceiling_height = 2.5
-[texture.flat]
-type = paint
-mean = 0.8
-[texture.rough]
-type = noise
-mean = 0.6
-contrast = 0.25
-scales_m = 0.5 0.12 0.03
-[wall.sides]
-points = 5 0; 0 0; 0 1.6; 5 1.6
-[wall.end]
-points = 5 0; 5 1.6
-texture = )" + end_texture + "\n";
-  return loadWorld(mrpt::config::CConfigFileMemory(corridor), "corridor.ini");
-}
+// The corridor of corridor_world.h, its end wall textured or painted.
+World corridorEndingIn(const std::string& end_texture) { return testing::corridorWorld(0.8, end_texture); }
 
 // Five frames down the corridor's middle, looking at the end wall from 3.45 m to 3.05 m.
 std::vector<mrpt::poses::CPose2D> downTheCorridor() {

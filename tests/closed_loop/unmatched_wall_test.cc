@@ -2,7 +2,6 @@
 // only from the textured floor's end at its foot (ProjectionOptions::floor_end_max_depth_m as a
 // reading, floor_end_clear_max_depth_m for the guard), or, nearer than the floor the camera can
 // see, from the floor missing from the image's bottom rows (ProjectionOptions::near_floor_m).
-#include <mrpt/config/CConfigFileMemory.h>
 
 #include <gtest/gtest.h>
 
@@ -19,34 +18,16 @@
 #include "mapping/stereo_mapper.h"
 #include "simulator/simulation.h"
 #include "simulator/world_loader.h"
+#include "corridor_world.h"
 #include "shipped_config.h"
 
 namespace stereonav {
 namespace {
 
-// A corridor 1.6 m wide whose textured walls run east from x = 0 to a flat-painted end wall at
-// x = 5 (its face at x = 4.95, half the default 0.1 m thickness short of its line).
-constexpr const char* kCorridor = R"(
-[world]
-start_pose = 0.8 0.8 0
-ceiling_height = 2.5
-[texture.flat]
-type = paint
-mean = 0.8
-[wall.sides]
-points = 5 0; 0 0; 0 1.6; 5 1.6
-[wall.end]
-points = 5 0; 5 1.6
-texture = flat
-)";
-constexpr double kEndWallFace = 4.95;
-
-// The corridor with the robot starting at (start_x, 0.8), looking at the painted wall.
-World corridorFrom(double start_x) {
-  std::string corridor = kCorridor;
-  corridor.replace(corridor.find("start_pose = 0.8"), 16, "start_pose = " + std::to_string(start_x));
-  return loadWorld(mrpt::config::CConfigFileMemory(corridor), "corridor.ini");
-}
+// The corridor (corridor_world.h) with the robot starting at (start_x, 0.8), looking at its
+// painted end wall.
+World corridorFrom(double start_x) { return testing::corridorWorld(start_x, "flat"); }
+constexpr double kEndWallFace = testing::kCorridorEndWallFace;
 
 // Occupied cells in the strip just before and in the end wall (x 4.75 .. 5.05), across the
 // corridor away from the side walls (y 0.45 .. 1.15: eight rows of 0.1 m cells).
@@ -88,7 +69,7 @@ TEST(UnmatchedWallTest, TheMapMarksAFlatPaintedWallAtTheFloorsEnd) {
 // It explores towards the painted wall and stops short of it, without a collision.
 void expectStopsShortOfThePaintedWall(const ExplorationConfig& config, const std::string& name) {
   SCOPED_TRACE(name);
-  const World world = loadWorld(mrpt::config::CConfigFileMemory(kCorridor), "corridor.ini");
+  const World world = corridorFrom(0.8);
   const std::string directory = std::string(STEREONAV_BINARY_DIR) + "/test_outputs/closed_loop/unmatched_wall";
   std::filesystem::create_directories(directory);
   ExplorationJob job;
