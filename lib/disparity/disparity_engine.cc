@@ -51,6 +51,10 @@ void StereoMatcher::compute(const StereoFrame& frame, cv::Mat1f& disparity) {
     }
     if (!match.second_score.empty()) rejectIndistinctMatches(disparity, match, options_.second_best_ratio, rows);
     if (swapped) rejectInconsistentMatches(disparity, *swapped, first, options_.left_right_max_diff, rows);
+    if (options_.fattening_min_step > 0) {
+      rejectFattenedEdges(disparity, frame.reference, options_.window, options_.fattening_min_jump,
+                          options_.fattening_min_step, rows);
+    }
   };
   if (stripes == 1) {
     validate(cv::Range(0, 1));

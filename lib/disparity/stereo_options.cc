@@ -98,6 +98,8 @@ StereoOptions loadStereoOptions(IniSection& section) {
   options.second_best_ratio = section.getDouble("second_best_ratio", options.second_best_ratio);
   options.left_right_check = section.getBool("left_right_check", options.left_right_check);
   options.left_right_max_diff = section.getDouble("left_right_max_diff", options.left_right_max_diff);
+  options.fattening_min_step = section.getDouble("fattening_min_step", options.fattening_min_step);
+  options.fattening_min_jump = section.getDouble("fattening_min_jump", options.fattening_min_jump);
   options.partial_candidates = section.getBool("partial_candidates", options.partial_candidates);
   options.subpixel = section.getBool("subpixel", options.subpixel);
   options.threads = section.getInt("threads", options.threads);
@@ -150,6 +152,10 @@ void validateStereoOptions(const StereoOptions& options, const std::string& sect
     fail("second_best_ratio", "must be in (0, 1]");
   }
   if (!(options.left_right_max_diff >= 0)) fail("left_right_max_diff", "must be >= 0");
+  if (!(options.fattening_min_step >= 0 && options.fattening_min_step <= 255)) {
+    fail("fattening_min_step", "must be in 0..255");
+  }
+  if (!(options.fattening_min_jump > 0)) fail("fattening_min_jump", "must be positive");
   if (options.threads < 1 || options.threads > 256) fail("threads", "must be in 1..256");
   if (!simdSupported(options.simd)) fail("simd", std::string(toString(options.simd)) + " is not supported by this CPU");
   if (options.opencv_texture_threshold < 0) fail("opencv_texture_threshold", "must be >= 0");

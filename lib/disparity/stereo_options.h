@@ -96,6 +96,11 @@ struct StereoOptions {
   // pixel only if the disparity found there differs by at most left_right_max_diff.
   bool left_right_check = true;
   double left_right_max_diff = 1.0;
+  // Depth-edge test (rejectFattenedEdges): near-surface pixels beyond the strongest brightness step
+  // at a disparity fall of at least fattening_min_jump pixels are rejected, where that step is at
+  // least fattening_min_step grey levels; 0 = off.
+  double fattening_min_step = 0;
+  double fattening_min_jump = 2;
   // Pixels within max_disparity of the image edge a baseline points away from (the left band of a
   // binocular rig) have some candidates off the secondary image. false: those that no camera sees
   // at every candidate stay invalid, as cv::StereoBM leaves them. true: they are matched against

@@ -3,7 +3,9 @@
 #include <opencv2/core/hal/intrin.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "disparity/disparity_image.h"
 #include "disparity/prefilter.h"
@@ -109,6 +111,65 @@ void rejectInconsistentMatches(cv::Mat1f& disparity, const cv::Mat1f& swapped, c
       }
     }
     for (; x < width; ++x) test(row, y, x);
+  }
+}
+
+void rejectFattenedEdges(cv::Mat1f& disparity, const cv::Mat1b& reference, int window, double min_jump,
+                         double min_step, const cv::Range& rows) {
+  CV_Assert(disparity.size() == reference.size());
+  const int width = disparity.cols, height = disparity.rows, half_window = window / 2;
+  const cv::Range tested = rowsOf(rows, height);
+  thread_local std::vector<float> matched, step;  // the row as matched; step[x] is between x and x + 1
+  matched.resize(width);
+  step.resize(width);
+  for (int y = tested.start; y < tested.end; ++y) {
+    float* row = disparity.ptr<float>(y);
+    std::copy(row, row + width, matched.begin());
+    const uchar* lines[3] = {reference.ptr<uchar>(std::max(y - 1, 0)), reference.ptr<uchar>(y),
+                             reference.ptr<uchar>(std::min(y + 1, height - 1))};
+    for (int x = 0; x + 1 < width; ++x) {
+      int sum = 0;
+      for (const uchar* line : lines) sum += line[x + 1] - line[x];
+      step[x] = std::abs(static_cast<float>(sum)) / 3.0f;
+    }
+    // The strongest step between columns [from, to), or -1 if none reaches min_step.
+    const auto strongestStep = [&](int from, int to) {
+      int best = -1;
+      float strongest = static_cast<float>(min_step);
+      for (int x = std::max(from, 0); x < std::min(to, width - 1); ++x) {
+        if (step[x] >= strongest) {
+          strongest = step[x];
+          best = x;
+        }
+      }
+      return best;
+    };
+    const auto rejectNear = [&](int from, int to, float threshold) {  // [from, to]
+      for (int x = from; x <= to; ++x) {
+        if (isValidDisparity(matched[x]) && matched[x] > threshold) row[x] = kInvalidDisparity;
+      }
+    };
+    int previous = -1;
+    for (int x = 0; x < width; ++x) {
+      if (!isValidDisparity(matched[x])) continue;
+      const int a = previous, b = x;
+      previous = x;
+      // Between the two lie at most the pixels the far camera cannot see (as many as the jump)
+      // and a window's worth the tests rejected.
+      if (a < 0 || static_cast<float>(b - a) > static_cast<float>(window) + std::abs(matched[a] - matched[b])) {
+        continue;
+      }
+      const float middle = 0.5f * (matched[a] + matched[b]);
+      if (matched[a] - matched[b] >= min_jump) {
+        // Near surface on the left: its true right border lies at or before a.
+        const int edge = strongestStep(a - half_window, b);
+        if (edge >= 0 && edge < a) rejectNear(edge + 1, a, middle);
+      } else if (matched[b] - matched[a] >= min_jump) {
+        // Near surface on the right: its true left border lies at or after b.
+        const int edge = strongestStep(a, b + half_window);
+        if (edge >= b) rejectNear(b, edge, middle);
+      }
+    }
   }
 }
 

@@ -48,6 +48,24 @@ TEST(TsukubaTest, MultiBaselineSadWithValidation) {
   EXPECT_LE(result.bad_1, 0.030);
 }
 
+// The depth-edge test against the ground truth: the pixels it rejects beside tsukuba's depth edges
+// (the lamp, the head, the cans) are mostly wrong, where the pixels kept are wrong one time in
+// thirty, so the errors fall by far more than the density.
+TEST(TsukubaTest, DepthEdgeTestRejectsMostlyWrongPixels) {
+  StereoOptions options = tsukubaOptions();
+  const DisparityEvaluation matched = evaluate(tsukubaBinocular(), options);
+  options.fattening_min_step = 10;
+  const DisparityEvaluation trimmed = evaluate(tsukubaBinocular(), options);
+  print("binocular SAD", matched);
+  print("binocular SAD, depth-edge test", trimmed);
+  const double wrong_before = matched.bad_1 * matched.valid_pixels, wrong_after = trimmed.bad_1 * trimmed.valid_pixels;
+  const int rejected = matched.valid_pixels - trimmed.valid_pixels;
+  ASSERT_GT(rejected, 0);
+  EXPECT_LE(rejected, 0.015 * matched.known_pixels);
+  EXPECT_GE((wrong_before - wrong_after) / rejected, 0.4);
+  EXPECT_LE(wrong_after, 0.9 * wrong_before);
+}
+
 TEST(TsukubaTest, OpenCvStereoBmForScale) {
   StereoOptions options = tsukubaOptions();
   options.backend = StereoBackend::kOpenCvBm;

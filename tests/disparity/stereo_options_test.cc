@@ -21,7 +21,7 @@ TEST(StereoOptionsTest, LoadsEveryKey) {
   const StereoOptions options = load(
       "backend = sgbm\nmin_disparity = 2\nmax_disparity = 47\nwindow = 9\nprefilter = log\nprefilter_cap = 20\n"
       "pixel_cost = birchfield_tomasi\nintensity_term = true\npartial_candidates = true\ncombination = best_half\naggregation = semiglobal\nscanline_p1 = 3\nscanline_p2 = 40\ntexture_threshold = 1.5\ntexture_sigma = 2\nuniqueness_threshold = 0.03\n"
-      "second_best_ratio = 0.85\nleft_right_check = false\nleft_right_max_diff = 2\nsubpixel = true\nthreads = 4\nsimd = sse2\n"
+      "second_best_ratio = 0.85\nleft_right_check = false\nleft_right_max_diff = 2\nfattening_min_step = 12\nfattening_min_jump = 3\nsubpixel = true\nthreads = 4\nsimd = sse2\n"
       "opencv_texture_threshold = 5\nopencv_uniqueness_ratio = 10\nopencv_speckle_window = 100\n"
       "opencv_speckle_range = 2\n");
   EXPECT_EQ(options.backend, StereoBackend::kOpenCvSgbm);
@@ -44,6 +44,8 @@ TEST(StereoOptionsTest, LoadsEveryKey) {
   EXPECT_DOUBLE_EQ(options.second_best_ratio, 0.85);
   EXPECT_FALSE(options.left_right_check);
   EXPECT_DOUBLE_EQ(options.left_right_max_diff, 2.0);
+  EXPECT_DOUBLE_EQ(options.fattening_min_step, 12.0);
+  EXPECT_DOUBLE_EQ(options.fattening_min_jump, 3.0);
   EXPECT_TRUE(options.subpixel);
   EXPECT_EQ(options.threads, 4);
   EXPECT_EQ(options.simd, SimdLevel::kSse2);
@@ -65,6 +67,7 @@ TEST(StereoOptionsTest, EmptySectionGivesTheDefaults) {
   EXPECT_EQ(options.simd, SimdLevel::kAuto);
   EXPECT_FALSE(options.intensity_term);      // the paper's cost on the prefiltered images alone
   EXPECT_FALSE(options.partial_candidates);  // pixels that miss candidates stay unmatched
+  EXPECT_EQ(options.fattening_min_step, 0.0);  // the paper has no depth-edge test
 }
 
 TEST(StereoOptionsTest, UnknownKeyIsNamedWithTheNearestKnownOne) {
@@ -95,6 +98,8 @@ TEST(StereoOptionsTest, BadValuesNameTheKey) {
   EXPECT_NE(errorOf("intensity_term = true\nprefilter = none\n").find("[stereo] intensity_term: needs prefilter"),
             std::string::npos);
   EXPECT_NE(errorOf("intensity_term = true\nprefilter_cap = 64\n").find("[stereo] intensity_term"), std::string::npos);
+  EXPECT_NE(errorOf("fattening_min_step = -1\n").find("[stereo] fattening_min_step"), std::string::npos);
+  EXPECT_NE(errorOf("fattening_min_jump = 0\n").find("[stereo] fattening_min_jump"), std::string::npos);
   EXPECT_NE(errorOf("simd = avx512\n").find("[stereo] simd: expected auto | avx2 | sse2"), std::string::npos);
 }
 

@@ -23,8 +23,11 @@ class SyntheticScene {
                        background_disparity, texture()});
   }
 
-  // `area` is where the plane is in the reference image; nearer planes are added later.
-  void addPlane(const cv::Rect& area, double disparity) { layers_.push_back({area, disparity, texture()}); }
+  // `area` is where the plane is in the reference image; nearer planes are added later. Its texture
+  // spans grey levels darkest..brightest.
+  void addPlane(const cv::Rect& area, double disparity, double darkest = 20, double brightest = 235) {
+    layers_.push_back({area, disparity, texture(darkest, brightest)});
+  }
 
   // An untextured patch (grey 128) on the background, in reference-image coordinates.
   void addFlatPatch(const cv::Rect& area) { flat_patches_.push_back(area); }
@@ -63,11 +66,11 @@ class SyntheticScene {
     cv::Mat1f texture;  // covers area, indexed from area.tl()
   };
 
-  cv::Mat1f texture() {
+  cv::Mat1f texture(double darkest = 20, double brightest = 235) {
     cv::Mat1f noise(size_.height + 2 * kMargin, size_.width + 2 * kMargin);
     rng_.fill(noise, cv::RNG::UNIFORM, 0.0, 255.0);
     cv::GaussianBlur(noise, noise, cv::Size(), 1.2);
-    cv::normalize(noise, noise, 20, 235, cv::NORM_MINMAX);
+    cv::normalize(noise, noise, darkest, brightest, cv::NORM_MINMAX);
     return noise;
   }
 

@@ -214,5 +214,72 @@ TEST(LeftRightCheckTest, FollowsVerticalAndFractionalBaselines) {
   EXPECT_EQ(disparity(2, 4), 6.0f);
 }
 
+// A bright, faintly textured near plane (a painted door jamb) before a dim, faintly textured wall
+// at disparity 4: windows beside the plane are ruled by its edge and matched at its disparity.
+struct FatteningScene {
+  static constexpr double kNear = 12, kFar = 4;
+  SyntheticScene scene{kSize, kFar};
+  FatteningScene() {
+    scene.addPlane(cv::Rect(-20, -20, kSize.width + 40, kSize.height + 40), kFar, 60, 100);
+    scene.addPlane(kPlane, kNear, 190, 230);
+  }
+  // Pixels outside the plane that read nearer than midway to it, per row of the plane.
+  static double spreadPerRow(const cv::Mat1f& disparity) {
+    int spread = 0;
+    for (int y = kPlane.y; y < kPlane.y + kPlane.height; ++y) {
+      for (int x = 0; x < disparity.cols; ++x) {
+        const bool outside = x < kPlane.x || x >= kPlane.x + kPlane.width;
+        spread += outside && isValidDisparity(disparity(y, x)) && disparity(y, x) > (kNear + kFar) / 2;
+      }
+    }
+    return static_cast<double>(spread) / kPlane.height;
+  }
+};
+
+TEST(FattenedEdgeTest, TrimsTheNearSurfaceBackToItsBrightnessStep) {
+  FatteningScene setup;
+  const StereoFrame frame = binocular(setup.scene);
+  StereoOptions options = unvalidated();
+  options.left_right_check = true;
+  const cv::Mat1f matched = computeDisparity(frame, options);
+  // Up to half a window (3 pixels) beside each side of the plane reads its disparity (the
+  // left-right check keeps them: the reverse match is fattened alike).
+  EXPECT_GE(FatteningScene::spreadPerRow(matched), 2.0);
+  options.fattening_min_step = 20;
+  const cv::Mat1f trimmed = computeDisparity(frame, options);
+  EXPECT_LE(FatteningScene::spreadPerRow(trimmed), 0.1);
+  // The plane itself keeps its disparity up to its borders.
+  const cv::Mat1b plane = rectMask(kSize, kPlane);
+  EXPECT_GE(shareCorrect(trimmed, setup.scene.trueDisparity(), plane), 0.97);
+}
+
+TEST(FattenedEdgeTest, LeavesAJumpWithoutABrightnessStepAsItIs) {
+  cv::Mat1f disparity(1, 12, 4.0f);
+  disparity.colRange(0, 6).setTo(12.0f);
+  const cv::Mat1b flat(1, 12, uchar{100});
+  cv::Mat1f tested = disparity.clone();
+  rejectFattenedEdges(tested, flat, 7, 2, 20);
+  EXPECT_EQ(cv::countNonZero(tested != disparity), 0);
+  // A step of 30 grey levels two pixels inside the near side: the two pixels beyond it go.
+  cv::Mat1b stepped = flat.clone();
+  stepped.colRange(0, 4).setTo(130);
+  rejectFattenedEdges(tested, stepped, 7, 2, 20);
+  for (int x = 0; x < 12; ++x) {
+    EXPECT_EQ(isValidDisparity(tested(0, x)), x < 4 || x >= 6) << x;
+  }
+}
+
+TEST(FattenedEdgeTest, NearSurfaceOnTheRightAndAcrossAGapOfInvalidPixels) {
+  cv::Mat1f disparity(1, 14, 4.0f);
+  disparity.colRange(7, 14).setTo(12.0f);
+  disparity(0, 5) = disparity(0, 6) = kInvalidDisparity;  // occluded, rejected by the left-right check
+  cv::Mat1b reference(1, 14, uchar{100});
+  reference.colRange(10, 14).setTo(60);  // the plane truly starts at column 10
+  rejectFattenedEdges(disparity, reference, 7, 2, 20);
+  for (int x = 0; x < 14; ++x) {
+    EXPECT_EQ(isValidDisparity(disparity(0, x)), x < 5 || x >= 10) << x;
+  }
+}
+
 }  // namespace
 }  // namespace stereonav
