@@ -44,11 +44,11 @@ void rejectInconsistentMatches(cv::Mat1f& disparity, const cv::Mat1f& swapped, c
 // so the near surface spreads up to half a window over the far one beside it (foreground
 // fattening) and every obstacle reads that much wider in the stereo scan, a door that much
 // narrower. Along each row, where the disparity falls by at least `min_jump` from one valid pixel
-// to the next (no farther apart than the window and the jump: the occluded pixels a left-right
-// check rejects lie between), the surfaces' true boundary is taken to be the
-// strongest vertical brightness step of `reference` (mean over three rows) between half a window
-// inside the near side and the far side's pixel; near-surface pixels beyond it are rejected. A
-// step weaker than `min_step` grey levels says nothing, and the jump is left as it is.
+// to the next (no farther apart than the window plus the jump: the occluded pixels a left-right
+// check rejects lie between), the surfaces' true boundary is taken to be the strongest vertical
+// brightness step of `reference` (mean over three rows) between half a window inside the near
+// side and the far side's pixel; near-surface pixels beyond it are rejected. A step weaker than
+// `min_step` grey levels says nothing, and the jump is left as it is.
 void rejectFattenedEdges(cv::Mat1f& disparity, const cv::Mat1b& reference, int window, double min_jump,
                          double min_step, const cv::Range& rows = cv::Range::all());
 

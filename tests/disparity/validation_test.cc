@@ -281,5 +281,17 @@ TEST(FattenedEdgeTest, NearSurfaceOnTheRightAndAcrossAGapOfInvalidPixels) {
   }
 }
 
+TEST(FattenedEdgeTest, TestsOnlyTheRowsAskedFor) {
+  cv::Mat1f disparity(3, 12, 4.0f);
+  disparity.colRange(0, 6).setTo(12.0f);
+  cv::Mat1b reference(3, 12, uchar{100});
+  reference.colRange(0, 4).setTo(130);
+  rejectFattenedEdges(disparity, reference, 7, 2, 20, cv::Range(1, 2));
+  for (int y = 0; y < 3; ++y) {
+    EXPECT_EQ(isValidDisparity(disparity(y, 4)), y != 1) << y;
+    EXPECT_EQ(isValidDisparity(disparity(y, 5)), y != 1) << y;
+  }
+}
+
 }  // namespace
 }  // namespace stereonav
