@@ -49,8 +49,8 @@ TEST(TsukubaTest, MultiBaselineSadWithValidation) {
 }
 
 // The depth-edge test against the ground truth: the pixels it rejects beside tsukuba's depth edges
-// (the lamp, the head, the cans) are mostly wrong, where the pixels kept are wrong one time in
-// thirty, so the errors fall by far more than the density.
+// (the lamp, the head, the cans) are mostly wrong, where about 4% of the pixels kept are, so the
+// errors fall by far more than the density.
 TEST(TsukubaTest, DepthEdgeTestRejectsMostlyWrongPixels) {
   StereoOptions options = tsukubaOptions();
   const DisparityEvaluation matched = evaluate(tsukubaBinocular(), options);
