@@ -149,6 +149,16 @@ void rejectFattenedEdges(cv::Mat1f& disparity, const cv::Mat1b& reference, int w
         if (isValidDisparity(matched[x]) && matched[x] > threshold) row[x] = kInvalidDisparity;
       }
     };
+    // Whether the near surface at `from` runs on for two windows in direction `dir` (disparity
+    // continuous from pixel to pixel): a narrower one (a pole, a table leg) is left fattened.
+    const int min_width = 2 * window;
+    const auto wide = [&](int from, int dir) {
+      int run = 1;
+      for (int x = from + dir; run < min_width && x >= 0 && x < width; x += dir, ++run) {
+        if (!isValidDisparity(matched[x]) || std::abs(matched[x] - matched[x - dir]) >= min_jump) break;
+      }
+      return run >= min_width;
+    };
     int previous = -1;
     for (int x = 0; x < width; ++x) {
       if (!isValidDisparity(matched[x])) continue;
@@ -162,10 +172,12 @@ void rejectFattenedEdges(cv::Mat1f& disparity, const cv::Mat1b& reference, int w
       const float middle = 0.5f * (matched[a] + matched[b]);
       if (matched[a] - matched[b] >= min_jump) {
         // Near surface on the left: its true right border lies at or before a.
+        if (!wide(a, -1)) continue;
         const int edge = strongestStep(a - half_window, b);
         if (edge >= 0 && edge < a) rejectNear(edge + 1, a, middle);
       } else if (matched[b] - matched[a] >= min_jump) {
         // Near surface on the right: its true left border lies at or after b.
+        if (!wide(b, 1)) continue;
         const int edge = strongestStep(a, b + half_window);
         if (edge >= b) rejectNear(b, edge, middle);
       }

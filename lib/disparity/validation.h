@@ -48,7 +48,9 @@ void rejectInconsistentMatches(cv::Mat1f& disparity, const cv::Mat1f& swapped, c
 // check rejects lie between), the surfaces' true boundary is taken to be the strongest vertical
 // brightness step of `reference` (mean over three rows) between half a window inside the near
 // side and the far side's pixel; near-surface pixels beyond it are rejected. A step weaker than
-// `min_step` grey levels says nothing, and the jump is left as it is.
+// `min_step` grey levels says nothing, and the jump is left as it is. A near surface narrower than
+// two windows (a pole, a table leg) is left fattened: its few pixels' steps cannot be told from
+// its texture's, and trimming them could take the whole surface away.
 void rejectFattenedEdges(cv::Mat1f& disparity, const cv::Mat1b& reference, int window, double min_jump,
                          double min_step, const cv::Range& rows = cv::Range::all());
 

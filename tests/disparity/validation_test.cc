@@ -247,49 +247,65 @@ TEST(FattenedEdgeTest, TrimsTheNearSurfaceBackToItsBrightnessStep) {
   EXPECT_GE(FatteningScene::spreadPerRow(matched), 2.0);
   options.fattening_min_step = 20;
   const cv::Mat1f trimmed = computeDisparity(frame, options);
-  EXPECT_LE(FatteningScene::spreadPerRow(trimmed), 0.1);
+  EXPECT_LE(FatteningScene::spreadPerRow(trimmed), 0.25);
   // The plane itself keeps its disparity up to its borders.
   const cv::Mat1b plane = rectMask(kSize, kPlane);
   EXPECT_GE(shareCorrect(trimmed, setup.scene.trueDisparity(), plane), 0.97);
 }
 
 TEST(FattenedEdgeTest, LeavesAJumpWithoutABrightnessStepAsItIs) {
-  cv::Mat1f disparity(1, 12, 4.0f);
-  disparity.colRange(0, 6).setTo(12.0f);
-  const cv::Mat1b flat(1, 12, uchar{100});
+  cv::Mat1f disparity(1, 40, 4.0f);
+  disparity.colRange(0, 20).setTo(12.0f);
+  const cv::Mat1b flat(1, 40, uchar{100});
   cv::Mat1f tested = disparity.clone();
   rejectFattenedEdges(tested, flat, 7, 2, 20);
   EXPECT_EQ(cv::countNonZero(tested != disparity), 0);
   // A step of 30 grey levels two pixels inside the near side: the two pixels beyond it go.
   cv::Mat1b stepped = flat.clone();
-  stepped.colRange(0, 4).setTo(130);
+  stepped.colRange(0, 18).setTo(130);
   rejectFattenedEdges(tested, stepped, 7, 2, 20);
-  for (int x = 0; x < 12; ++x) {
-    EXPECT_EQ(isValidDisparity(tested(0, x)), x < 4 || x >= 6) << x;
+  for (int x = 0; x < 40; ++x) {
+    EXPECT_EQ(isValidDisparity(tested(0, x)), x < 18 || x >= 20) << x;
   }
 }
 
 TEST(FattenedEdgeTest, NearSurfaceOnTheRightAndAcrossAGapOfInvalidPixels) {
-  cv::Mat1f disparity(1, 14, 4.0f);
-  disparity.colRange(7, 14).setTo(12.0f);
+  cv::Mat1f disparity(1, 40, 4.0f);
+  disparity.colRange(7, 40).setTo(12.0f);
   disparity(0, 5) = disparity(0, 6) = kInvalidDisparity;  // occluded, rejected by the left-right check
-  cv::Mat1b reference(1, 14, uchar{100});
-  reference.colRange(10, 14).setTo(60);  // the plane truly starts at column 10
+  cv::Mat1b reference(1, 40, uchar{100});
+  reference.colRange(10, 40).setTo(60);  // the plane truly starts at column 10
   rejectFattenedEdges(disparity, reference, 7, 2, 20);
-  for (int x = 0; x < 14; ++x) {
+  for (int x = 0; x < 40; ++x) {
     EXPECT_EQ(isValidDisparity(disparity(0, x)), x < 5 || x >= 10) << x;
   }
 }
 
+// A near surface narrower than two windows (13 pixels for a window of 7: a pole or a table leg,
+// fattened) keeps its fattened width even where a brightness step lies inside it; 14 pixels are
+// trimmed.
+TEST(FattenedEdgeTest, LeavesThinSurfacesFattened) {
+  for (const int near_width : {13, 14}) {
+    cv::Mat1f disparity(1, 40, 4.0f);
+    disparity.colRange(10, 10 + near_width).setTo(12.0f);
+    cv::Mat1b reference(1, 40, uchar{100});
+    reference.colRange(12, 8 + near_width).setTo(160);  // the surface is two pixels narrower each side
+    rejectFattenedEdges(disparity, reference, 7, 2, 20);
+    int near = 0;
+    for (int x = 0; x < 40; ++x) near += isValidDisparity(disparity(0, x)) && disparity(0, x) > 8;
+    EXPECT_EQ(near, near_width == 13 ? 13 : near_width - 4) << near_width;
+  }
+}
+
 TEST(FattenedEdgeTest, TestsOnlyTheRowsAskedFor) {
-  cv::Mat1f disparity(3, 12, 4.0f);
-  disparity.colRange(0, 6).setTo(12.0f);
-  cv::Mat1b reference(3, 12, uchar{100});
-  reference.colRange(0, 4).setTo(130);
+  cv::Mat1f disparity(3, 40, 4.0f);
+  disparity.colRange(0, 20).setTo(12.0f);
+  cv::Mat1b reference(3, 40, uchar{100});
+  reference.colRange(0, 18).setTo(130);
   rejectFattenedEdges(disparity, reference, 7, 2, 20, cv::Range(1, 2));
   for (int y = 0; y < 3; ++y) {
-    EXPECT_EQ(isValidDisparity(disparity(y, 4)), y != 1) << y;
-    EXPECT_EQ(isValidDisparity(disparity(y, 5)), y != 1) << y;
+    EXPECT_EQ(isValidDisparity(disparity(y, 18)), y != 1) << y;
+    EXPECT_EQ(isValidDisparity(disparity(y, 19)), y != 1) << y;
   }
 }
 
