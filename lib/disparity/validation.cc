@@ -119,26 +119,27 @@ void rejectFattenedEdges(cv::Mat1f& disparity, const cv::Mat1b& reference, int w
   CV_Assert(disparity.size() == reference.size());
   const int width = disparity.cols, height = disparity.rows, half_window = window / 2;
   const cv::Range tested = rowsOf(rows, height);
-  thread_local std::vector<float> matched, step;  // the row as matched; step[x] is between x and x + 1
+  thread_local std::vector<float> matched;  // the row as matched, before any pixel is rejected
   matched.resize(width);
-  step.resize(width);
   for (int y = tested.start; y < tested.end; ++y) {
     float* row = disparity.ptr<float>(y);
     std::copy(row, row + width, matched.begin());
     const uchar* lines[3] = {reference.ptr<uchar>(std::max(y - 1, 0)), reference.ptr<uchar>(y),
                              reference.ptr<uchar>(std::min(y + 1, height - 1))};
-    for (int x = 0; x + 1 < width; ++x) {
+    // The brightness step between columns x and x + 1, read only near jumps.
+    const auto step = [&](int x) {
       int sum = 0;
       for (const uchar* line : lines) sum += line[x + 1] - line[x];
-      step[x] = std::abs(static_cast<float>(sum)) / 3.0f;
-    }
+      return std::abs(static_cast<float>(sum)) / 3.0f;
+    };
     // The strongest step between columns [from, to), or -1 if none reaches min_step.
     const auto strongestStep = [&](int from, int to) {
       int best = -1;
       float strongest = static_cast<float>(min_step);
       for (int x = std::max(from, 0); x < std::min(to, width - 1); ++x) {
-        if (step[x] >= strongest) {
-          strongest = step[x];
+        const float here = step(x);
+        if (here >= strongest) {
+          strongest = here;
           best = x;
         }
       }
