@@ -79,10 +79,10 @@ cv::Mat1b loadMaskFor(const std::string& path, const cv::Mat1f& ground_truth) {
 void printEvaluation(const std::string& name, const DisparityEvaluation& result) {
   char line[240];
   std::snprintf(line, sizeof(line),
-                "evaluation %s: density %.2f%%  bad-1.0 %.2f%%  bad-2.0 %.2f%%  mean abs error %.3f px  (%d known "
-                "pixels)\n",
-                name.c_str(), 100.0 * result.density, 100.0 * result.bad_1, 100.0 * result.bad_2,
-                result.mean_abs_error, result.known_pixels);
+                "evaluation %s: density %.2f%%  bad-0.5 %.2f%%  bad-1.0 %.2f%%  bad-2.0 %.2f%%  mean abs error %.3f "
+                "px  inlier rms %.3f px  (%d known pixels)\n",
+                name.c_str(), 100.0 * result.density, 100.0 * result.bad_0_5, 100.0 * result.bad_1,
+                100.0 * result.bad_2, result.mean_abs_error, result.inlier_rms_error, result.known_pixels);
   std::cout << line;
 }
 

@@ -63,8 +63,8 @@ DisparityEvaluation evaluateDisparity(const cv::Mat1f& disparity, const cv::Mat1
     throw std::invalid_argument("evaluation: mask and ground truth differ in size");
   }
   DisparityEvaluation result;
-  int bad_1 = 0, bad_2 = 0;
-  double abs_error_sum = 0.0;
+  int bad_0_5 = 0, bad_1 = 0, bad_2 = 0;
+  double abs_error_sum = 0.0, inlier_square_sum = 0.0;
   for (int y = border; y < disparity.rows - border; ++y) {
     for (int x = border; x < disparity.cols - border; ++x) {
       const float truth = ground_truth(y, x);
@@ -75,15 +75,20 @@ DisparityEvaluation evaluateDisparity(const cv::Mat1f& disparity, const cv::Mat1
       ++result.valid_pixels;
       const double error = std::abs(static_cast<double>(d) - truth);
       abs_error_sum += error;
+      bad_0_5 += error > 0.5;
       bad_1 += error > 1.0;
       bad_2 += error > 2.0;
+      if (error <= 1.0) inlier_square_sum += error * error;
     }
   }
   if (result.known_pixels > 0) result.density = static_cast<double>(result.valid_pixels) / result.known_pixels;
   if (result.valid_pixels > 0) {
+    result.bad_0_5 = static_cast<double>(bad_0_5) / result.valid_pixels;
     result.bad_1 = static_cast<double>(bad_1) / result.valid_pixels;
     result.bad_2 = static_cast<double>(bad_2) / result.valid_pixels;
     result.mean_abs_error = abs_error_sum / result.valid_pixels;
+    const int inliers = result.valid_pixels - bad_1;
+    if (inliers > 0) result.inlier_rms_error = std::sqrt(inlier_square_sum / inliers);
   }
   return result;
 }

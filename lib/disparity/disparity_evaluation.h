@@ -14,9 +14,13 @@ struct DisparityEvaluation {
   int known_pixels = 0;         // ground truth known
   int valid_pixels = 0;         // of those, a valid disparity was produced
   double density = 0.0;         // valid_pixels / known_pixels
+  double bad_0_5 = 0.0;         // share of valid pixels with |error| > 0.5 (sub-pixel precision)
   double bad_1 = 0.0;           // share of valid pixels with |error| > 1.0
   double bad_2 = 0.0;           // share of valid pixels with |error| > 2.0
   double mean_abs_error = 0.0;  // over valid pixels
+  // Root mean square error over the valid pixels with |error| <= 1: the precision of the matches
+  // that are right, which the bad-pixel shares cannot show (sub-pixel fits move errors within 1).
+  double inlier_rms_error = 0.0;
 };
 
 // A Middlebury ground-truth image (8- or 16-bit grey): disparity = value / scale, 0 = unknown

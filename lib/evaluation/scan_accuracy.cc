@@ -24,6 +24,8 @@ ScanAccuracy& ScanAccuracy::operator+=(const ScanAccuracy& other) {
   columns += other.columns;
   read += other.read;
   agreeing += other.agreeing;
+  agreeing_error_sum += other.agreeing_error_sum;
+  agreeing_square_error += other.agreeing_square_error;
   phantoms += other.phantoms;
   close_phantoms += other.close_phantoms;
   too_near += other.too_near;
@@ -32,10 +34,19 @@ ScanAccuracy& ScanAccuracy::operator+=(const ScanAccuracy& other) {
   return *this;
 }
 
+double ScanAccuracy::agreeingMeanError() const {
+  return agreeing == 0 ? 0.0 : agreeing_error_sum / static_cast<double>(agreeing);
+}
+
+double ScanAccuracy::agreeingRmsError() const {
+  return agreeing == 0 ? 0.0 : std::sqrt(agreeing_square_error / static_cast<double>(agreeing));
+}
+
 std::string ScanAccuracy::toText() const {
   std::ostringstream text;
   text << std::fixed << std::setprecision(2) << frames << " frames, " << 100.0 * share(read, columns)
-       << "% of columns read; of them " << 100.0 * share(agreeing, read) << "% agree with the truth, "
+       << "% of columns read; of them " << 100.0 * share(agreeing, read) << "% agree with the truth (mean "
+       << std::showpos << std::setprecision(3) << agreeingMeanError() << std::noshowpos << ", rms " << agreeingRmsError() << std::setprecision(2) << " px), "
        << 100.0 * share(phantoms, read) << "% read nearer than anything there (" << 100.0 * share(close_phantoms, read)
        << "% within reach); " << 100.0 * share(close_misses, close_obstacles)
        << "% of the columns with an obstacle within reach read it farther or not at all, and "
@@ -46,7 +57,9 @@ std::string ScanAccuracy::toText() const {
 std::string ScanAccuracy::toJson() const {
   std::ostringstream json;
   json << "{\"frames\": " << frames << ", \"columns\": " << columns << ", \"read\": " << read
-       << ", \"agreeing\": " << agreeing << ", \"phantoms\": " << phantoms << ", \"close_phantoms\": " << close_phantoms
+       << ", \"agreeing\": " << agreeing << ", \"agreeing_mean_px\": " << agreeingMeanError()
+       << ", \"agreeing_rms_px\": " << agreeingRmsError()
+       << ", \"phantoms\": " << phantoms << ", \"close_phantoms\": " << close_phantoms
        << ", \"too_near\": " << too_near << ", \"close_obstacles\": " << close_obstacles
        << ", \"close_misses\": " << close_misses << "}";
   return json.str();
@@ -75,7 +88,12 @@ ScanAccuracy compareScans(const DisparityScan& measured, const DisparityScan& tr
     }
     const double disparity = measured.column_disparity[x];
     ++accuracy.read;
-    accuracy.agreeing += truth.valid(x) && std::abs(disparity - true_disparity) <= options.agree_px ? 1 : 0;
+    const double error = disparity - true_disparity;
+    if (truth.valid(x) && std::abs(error) <= options.agree_px) {
+      ++accuracy.agreeing;
+      accuracy.agreeing_error_sum += error;
+      accuracy.agreeing_square_error += error * error;
+    }
     if (disparity > true_disparity + options.wrong_px) {
       ++accuracy.phantoms;
       accuracy.close_phantoms += floorRange(rig, x, measured.column_row[x], disparity) <= options.close_range_m ? 1 : 0;

@@ -30,6 +30,8 @@ struct ScanAccuracy {
   size_t columns = 0;          // of all frames
   size_t read = 0;             // columns with a reading
   size_t agreeing = 0;         // read, within agree_px of the truth's column
+  double agreeing_error_sum = 0.0;     // px (reading minus truth), summed over the agreeing columns
+  double agreeing_square_error = 0.0;  // px², summed over the agreeing columns
   size_t phantoms = 0;         // read nearer than the truth's column, or where it sees nothing
   size_t close_phantoms = 0;   // of them, read within close_range_m
   size_t too_near = 0;         // columns whose truth is nearer than max_disparity reaches
@@ -37,6 +39,10 @@ struct ScanAccuracy {
   size_t close_misses = 0;     // of them, read farther than the truth, or not at all
 
   ScanAccuracy& operator+=(const ScanAccuracy& other);
+  // The bias and the precision of the agreeing columns (px): what wall offsets and scan matching
+  // inherit. A positive bias reads surfaces too near.
+  double agreeingMeanError() const;
+  double agreeingRmsError() const;
   std::string toText() const;
   std::string toJson() const;
 };

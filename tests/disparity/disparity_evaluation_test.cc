@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <opencv2/imgcodecs.hpp>
 
+#include <cmath>
 #include <vector>
 
 #include "disparity/disparity_image.h"
@@ -29,11 +30,21 @@ TEST(DisparityEvaluationTest, CountsOnlyKnownPixelsInsideTheBorder) {
 }
 
 TEST(DisparityEvaluationTest, ErrorsExactlyAtTheThresholdAreNotBad) {
-  cv::Mat1f truth(1, 3, 4.0f), disparity(1, 3);
-  disparity << 5.0f, 6.0f, 6.25f;
+  cv::Mat1f truth(1, 4, 4.0f), disparity(1, 4);
+  disparity << 4.5f, 5.0f, 6.0f, 6.25f;
   const DisparityEvaluation result = evaluateDisparity(disparity, truth, 0);
-  EXPECT_DOUBLE_EQ(result.bad_1, 2.0 / 3.0);
-  EXPECT_DOUBLE_EQ(result.bad_2, 1.0 / 3.0);
+  EXPECT_DOUBLE_EQ(result.bad_0_5, 3.0 / 4.0);
+  EXPECT_DOUBLE_EQ(result.bad_1, 2.0 / 4.0);
+  EXPECT_DOUBLE_EQ(result.bad_2, 1.0 / 4.0);
+}
+
+TEST(DisparityEvaluationTest, InlierRmsLeavesOutErrorsAboveOnePixel) {
+  // Errors 0.25, -0.5, 1.0 (inliers) and 3.0 (left out): sqrt((0.0625 + 0.25 + 1) / 3).
+  cv::Mat1f truth(1, 4, 10.0f), disparity(1, 4);
+  disparity << 10.25f, 9.5f, 11.0f, 13.0f;
+  const DisparityEvaluation result = evaluateDisparity(disparity, truth, 0);
+  EXPECT_NEAR(result.inlier_rms_error, std::sqrt(1.3125 / 3.0), 1e-12);
+  EXPECT_DOUBLE_EQ(result.mean_abs_error, (0.25 + 0.5 + 1.0 + 3.0) / 4.0);
 }
 
 TEST(DisparityEvaluationTest, LoadsMiddleburyGroundTruthWithScaleAndUnknownZero) {

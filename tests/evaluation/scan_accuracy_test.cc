@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <stdexcept>
 
 namespace stereonav {
@@ -39,6 +40,8 @@ TEST(ScanAccuracyTest, CountsPhantomsAndMissesAgainstTheTruthsColumns) {
   EXPECT_EQ(accuracy.columns, 8u);
   EXPECT_EQ(accuracy.read, 7u);
   EXPECT_EQ(accuracy.agreeing, 2u);
+  EXPECT_NEAR(accuracy.agreeingMeanError(), (0.5 + 0.8) / 2.0, 1e-6);
+  EXPECT_NEAR(accuracy.agreeingRmsError(), std::sqrt((0.5 * 0.5 + 0.8 * 0.8) / 2.0), 1e-6);
   EXPECT_EQ(accuracy.phantoms, 3u);
   EXPECT_EQ(accuracy.close_phantoms, 2u);
   EXPECT_EQ(accuracy.too_near, 1u);
@@ -50,7 +53,8 @@ TEST(ScanAccuracyTest, CountsPhantomsAndMissesAgainstTheTruthsColumns) {
   EXPECT_EQ(twice.frames, 2u);
   EXPECT_EQ(twice.close_misses, 4u);
   EXPECT_EQ(twice.toJson(),
-            "{\"frames\": 2, \"columns\": 16, \"read\": 14, \"agreeing\": 4, \"phantoms\": 6, "
+            "{\"frames\": 2, \"columns\": 16, \"read\": 14, \"agreeing\": 4, \"agreeing_mean_px\": 0.65, "
+            "\"agreeing_rms_px\": 0.667083, \"phantoms\": 6, "
             "\"close_phantoms\": 4, \"too_near\": 2, \"close_obstacles\": 6, \"close_misses\": 4}");
 
   // Without a search limit the nearest column is an obstacle within reach, read 9 px farther: a miss.
