@@ -58,6 +58,7 @@ ColumnProjector::ColumnProjector(const CameraRig& rig, const ProjectionOptions& 
                                    ? rig.disparityForDepth(options.floor_end_clear_max_depth_m)
                                    : 0.0),
       surface_band_px_(options.surface_band_px),
+      surface_band_scan_only_(options.surface_band_scan_only),
       min_reading_disparity_(options.max_depth_m > 0.0 ? rig.disparityForDepth(options.max_depth_m)
                                                        : 0.0) {
   const PinholeCamera& camera = rig.reference;
@@ -119,6 +120,14 @@ DisparityScan ColumnProjector::project(const cv::Mat1f& disparity) const {
     }
   }
   if (surface_band_px_ > 0.0) {
+    float* surface_disparity = best;
+    int* surface_row = best_row;
+    if (surface_band_scan_only_) {
+      scan.column_surface.assign(width, -1.0f);
+      scan.column_surface_row.assign(width, -1);
+      surface_disparity = scan.column_surface.data();
+      surface_row = scan.column_surface_row.data();
+    }
     std::vector<std::pair<float, int>> surface;  // disparity, row
     surface.reserve(disparity.rows);
     for (int x = 0; x < width; ++x) {
@@ -132,19 +141,22 @@ DisparityScan ColumnProjector::project(const cv::Mat1f& disparity) const {
       // The median, the lower one of an even count.
       const auto median = surface.begin() + surface.size() / 2;
       std::nth_element(surface.begin(), median, surface.end(), std::greater<>());
-      best[x] = median->first;
-      best_row[x] = median->second;
+      surface_disparity[x] = median->first;
+      surface_row[x] = median->second;
     }
   }
   if (floor_end_min_disparity_ > 0.0) {
     for (int x = 0; x < width; ++x) {
       float foot = 0.0f;
       int foot_row = -1;
+      if (!unmatchedFoot(disparity, x, floor_end_min_disparity_, foot, foot_row)) continue;
       // A surface seen in the column at the foot's depth or nearer is the reading already.
-      if (unmatchedFoot(disparity, x, floor_end_min_disparity_, foot, foot_row) &&
-          !(best_row[x] >= 0 && best[x] >= foot - 0.5f)) {
-        best[x] = foot;
-        best_row[x] = foot_row;
+      if (best_row[x] >= 0 && best[x] >= foot - 0.5f) continue;
+      best[x] = foot;
+      best_row[x] = foot_row;
+      if (!scan.column_surface.empty()) {
+        scan.column_surface[x] = foot;
+        scan.column_surface_row[x] = foot_row;
       }
     }
   }
@@ -167,12 +179,16 @@ DisparityScan ColumnProjector::project(const cv::Mat1f& disparity) const {
     for (int x = 0; x < width; ++x) scan.column_blind[x] = blind(disparity, x);
   }
   const auto min_disparity = static_cast<float>(min_reading_disparity_);
-  for (int x = 0; x < width; ++x) {
-    if (best_row[x] < 0 || best[x] < min_disparity) {
-      best[x] = kInvalidDisparity;
-      best_row[x] = -1;
+  const auto drop_beyond_reach = [min_disparity](std::vector<float>& readings, std::vector<int>& rows) {
+    for (size_t x = 0; x < readings.size(); ++x) {
+      if (rows[x] < 0 || readings[x] < min_disparity) {
+        readings[x] = kInvalidDisparity;
+        rows[x] = -1;
+      }
     }
-  }
+  };
+  drop_beyond_reach(scan.column_disparity, scan.column_row);
+  drop_beyond_reach(scan.column_surface, scan.column_surface_row);
   return scan;
 }
 

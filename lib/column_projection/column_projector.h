@@ -12,7 +12,8 @@ namespace stereonav {
 
 // Projects a disparity image onto the floor plane column by column (paper section 3.3, figure
 // 5c): per column, the largest valid disparity whose 3D point lies inside the robot's body volume,
-// or the median of the nearest surface's (ProjectionOptions::surface_band_px); with
+// or the median of the nearest surface's (ProjectionOptions::surface_band_px; kept apart for the
+// virtual scan, DisparityScan::column_surface, with surface_band_scan_only); with
 // ProjectionOptions::floor_end_max_depth_m, the foot of an unmatched surface where the floor ends
 // in front of it; with ProjectionOptions::near_floor_m, which columns see nothing of the nearest
 // floor (DisparityScan::column_blind).
@@ -54,6 +55,7 @@ class ColumnProjector {
   // bottom); empty when near_floor_m is off.
   std::vector<int> near_floor_top_row_;
   double surface_band_px_;
+  bool surface_band_scan_only_;
   // Readings below this disparity are deeper than max_depth_m (0: no limit).
   double min_reading_disparity_;
 };

@@ -29,6 +29,14 @@ struct DisparityScan {
   // kInvalidDisparity where none; empty when not checked.
   std::vector<float> column_clear_end;
   std::vector<int> column_clear_end_row;
+  // Per column, where its nearest surface lies when the reading above is kept as that surface's
+  // nearest point (ProjectionOptions::surface_band_scan_only): the median of the surface's
+  // disparities, or the floor's end where that is the reading (kInvalidDisparity, -1 where none).
+  // The largest of tens of noisy pixels reads a wall 2-5 cm too near at 2-4 m, by an amount that
+  // changes with range; a map and a guard keep clear of that nearest point, a scan matcher aligns
+  // the walls where they lie. Empty otherwise.
+  std::vector<float> column_surface;
+  std::vector<int> column_surface_row;
 
   int columns() const { return static_cast<int>(column_disparity.size()); }
   bool valid(int column) const { return isValidDisparity(column_disparity[column]); }
@@ -39,6 +47,18 @@ struct DisparityScan {
            isValidDisparity(column_clear_end[column]);
   }
 };
+
+// The scan a scan matcher reads: every column's surface (DisparityScan::column_surface) where
+// the projection found them, else the scan itself.
+inline DisparityScan surfaceReadings(const DisparityScan& scan) {
+  DisparityScan surfaces = scan;
+  if (scan.column_surface.size() == scan.column_disparity.size() &&
+      scan.column_surface_row.size() == scan.column_row.size()) {
+    surfaces.column_disparity = scan.column_surface;
+    surfaces.column_row = scan.column_surface_row;
+  }
+  return surfaces;
+}
 
 // Figure 5d: depth along the optical axis, Z = f B / d, per column; +inf where the column saw no
 // obstacle (like the disparity's invalid marker, "nothing there", never 0).

@@ -9,6 +9,7 @@ ProjectionOptions loadProjectionOptions(IniSection& section) {
   options.floor_clearance_m = section.getDouble("floor_clearance_m", options.floor_clearance_m, -100.0, 100.0);
   options.robot_height_m = section.getDouble("robot_height_m", options.robot_height_m, -100.0, 100.0);
   options.surface_band_px = section.getNonNegative("surface_band_px", options.surface_band_px, 1e4);
+  options.surface_band_scan_only = section.getBool("surface_band_scan_only", options.surface_band_scan_only);
   options.max_depth_m = section.getDouble("max_depth_m", options.max_depth_m, 0.0, 1e4);
   options.floor_end_max_depth_m =
       section.getDouble("floor_end_max_depth_m", options.floor_end_max_depth_m, 0.0, 1e4);

@@ -15,6 +15,13 @@ struct ProjectionOptions {
   // surface, of which the largest is the noise extreme (the maximum of tens of noisy pixels
   // reads the surface too close).
   double surface_band_px = 0.0;
+  // With surface_band_px: true = only the virtual laser scan (what a scan matcher, a ROS topic and
+  // a recorded rawlog read) reads each column's surface (DisparityScan::column_surface); the
+  // reading that the map and a guard take stays the largest, the surface's nearest point, which a
+  // robot must keep clear of: the median places a wall where it is, but a table's top or a box's
+  // side receding from its edge within the band, behind that edge. Only where nothing matches
+  // the scans against that map (the walls' lines do not care where the map put them).
+  bool surface_band_scan_only = false;
   // A column whose reading is deeper than this (depth Z along the optical axis, metres) has no
   // reading: its region of uncertainty grows as Z^2 (paper section 3.2, equation 1), and one
   // far, deep region marks cells behind the obstacle that no later, closer view can clear. The
@@ -48,8 +55,8 @@ struct ProjectionOptions {
   double scan_max_range_m = 10.0;
 };
 
-// Section [projection]. Keys: floor_clearance_m, robot_height_m, surface_band_px, max_depth_m,
-// floor_end_max_depth_m, floor_end_clear_max_depth_m, near_floor_m, scan_max_range_m.
+// Section [projection]. Keys: floor_clearance_m, robot_height_m, surface_band_px,
+// surface_band_scan_only, max_depth_m, floor_end_max_depth_m, floor_end_clear_max_depth_m, near_floor_m, scan_max_range_m.
 // Throws ConfigError on bad values.
 ProjectionOptions loadProjectionOptions(IniSection& section);
 

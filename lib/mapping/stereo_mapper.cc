@@ -32,7 +32,7 @@ void StereoMapper::observe(const RigFrame& frame) {
   disparity_observation_->timestamp = frame.timestamp;
   if (makes_virtual_scans_) {
     ScopedStageTimer timer(times_, PipelineStage::kVirtualScan);
-    *virtual_scan_ = makeVirtualRangeScan(scan, scanner_.rig(), scan_max_range_m_);
+    *virtual_scan_ = makeVirtualRangeScan(surfaceReadings(scan), scanner_.rig(), scan_max_range_m_);
     virtual_scan_->timestamp = frame.timestamp;
     virtual_scan_->sensorLabel = kVirtualScanLabel;
   }

@@ -98,11 +98,34 @@ TEST(ColumnProjectorTest, SurfaceBandTakesTheMedianOfTheNearestSurface) {
   scan = ColumnProjector(rig, options).project(noisyWallColumn());
   EXPECT_EQ(scan.column_disparity[100], 5.05f);
   EXPECT_EQ(scan.column_row[100], 35);
+  EXPECT_TRUE(scan.column_surface.empty());
   // Within 1 px only the outlier itself.
   options.surface_band_px = 1.0;
   scan = ColumnProjector(rig, options).project(noisyWallColumn());
   EXPECT_EQ(scan.column_disparity[100], 6.5f);
   EXPECT_FALSE(scan.valid(99));
+}
+
+TEST(ColumnProjectorTest, SurfaceBandForTheScanOnlyKeepsTheNearestPointAsTheReading) {
+  const CameraRig rig = testRig(0, 0, 0, 0);
+  ProjectionOptions options = bodyVolume(0.95);
+  options.surface_band_px = 2.0;
+  options.surface_band_scan_only = true;
+  const DisparityScan scan = ColumnProjector(rig, options).project(noisyWallColumn());
+  EXPECT_EQ(scan.column_disparity[100], 6.5f);
+  EXPECT_EQ(scan.column_row[100], 34);
+  EXPECT_EQ(scan.column_surface[100], 5.05f);
+  EXPECT_EQ(scan.column_surface_row[100], 35);
+  EXPECT_FALSE(isValidDisparity(scan.column_surface[99]));
+  EXPECT_EQ(scan.column_surface_row[99], -1);
+  // The scan a matcher reads.
+  const DisparityScan surfaces = surfaceReadings(scan);
+  EXPECT_EQ(surfaces.column_disparity[100], 5.05f);
+  EXPECT_EQ(surfaces.column_row[100], 35);
+  EXPECT_FALSE(surfaces.valid(99));
+  // Without surfaces, the scan itself.
+  options.surface_band_scan_only = false;
+  EXPECT_EQ(surfaceReadings(ColumnProjector(rig, options).project(noisyWallColumn())).column_disparity[100], 5.05f);
 }
 
 TEST(ColumnProjectorTest, MaxDepthAppliesToTheColumnsReadingNotToItsPixels) {
@@ -116,9 +139,15 @@ TEST(ColumnProjectorTest, MaxDepthAppliesToTheColumnsReadingNotToItsPixels) {
   options.max_depth_m = 2.0;
   EXPECT_EQ(ColumnProjector(rig, options).project(disparity).column_disparity[100], 5.1f);
   options.surface_band_px = 1.0;
-  const DisparityScan scan = ColumnProjector(rig, options).project(disparity);
+  DisparityScan scan = ColumnProjector(rig, options).project(disparity);
   EXPECT_FALSE(scan.valid(100));
   EXPECT_EQ(scan.column_row[100], -1);
+  // The nearest point kept as the reading is inside; the scan's surface is not.
+  options.surface_band_scan_only = true;
+  scan = ColumnProjector(rig, options).project(disparity);
+  EXPECT_EQ(scan.column_disparity[100], 5.1f);
+  EXPECT_FALSE(isValidDisparity(scan.column_surface[100]));
+  EXPECT_EQ(scan.column_surface_row[100], -1);
 }
 
 TEST(ColumnProjectorTest, ZeroDisparityIsNoObstacle) {
@@ -163,6 +192,14 @@ TEST(ColumnProjectorTest, AnUnmatchedWallIsReadAtTheFloorsEnd) {
     EXPECT_EQ(scan.column_disparity[x], box ? 8.0f : 5.0f) << "column " << x;
     EXPECT_EQ(scan.column_row[x], box ? 40 : 75) << "column " << x;
   }
+  // The foot is where the painted wall's surface lies too; the box keeps its own.
+  ProjectionOptions band = bodyVolumeWith(kFloorEnd, 3.0);
+  band.surface_band_px = 1.0;
+  band.surface_band_scan_only = true;
+  const DisparityScan surfaces = ColumnProjector(rig, band).project(unmatchedWallCorridor());
+  EXPECT_EQ(surfaces.column_surface[20], 5.0f);
+  EXPECT_EQ(surfaces.column_surface_row[20], 75);
+  EXPECT_EQ(surfaces.column_surface[155], 8.0f);
 }
 
 TEST(ColumnProjectorTest, AFloorEndFartherThanTheLimitIsNoFoot) {

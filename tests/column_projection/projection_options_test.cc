@@ -11,7 +11,7 @@ namespace {
 TEST(ProjectionOptionsTest, LoadsEveryKey) {
   mrpt::config::CConfigFileMemory config(
       "[projection]\nfloor_clearance_m = 0.1\nrobot_height_m = 1.4\nsurface_band_px = 1.5\n"
-      "max_depth_m = 3\nfloor_end_max_depth_m = 2.5\nfloor_end_clear_max_depth_m = 3.5\nnear_floor_m = 0.4\n"
+      "surface_band_scan_only = true\nmax_depth_m = 3\nfloor_end_max_depth_m = 2.5\nfloor_end_clear_max_depth_m = 3.5\nnear_floor_m = 0.4\n"
       "scan_max_range_m = 6\n");
   IniSection section(config, "projection");
   const ProjectionOptions options = loadProjectionOptions(section);
@@ -19,6 +19,7 @@ TEST(ProjectionOptionsTest, LoadsEveryKey) {
   EXPECT_DOUBLE_EQ(options.floor_clearance_m, 0.1);
   EXPECT_DOUBLE_EQ(options.robot_height_m, 1.4);
   EXPECT_DOUBLE_EQ(options.surface_band_px, 1.5);
+  EXPECT_TRUE(options.surface_band_scan_only);
   EXPECT_DOUBLE_EQ(options.max_depth_m, 3.0);
   EXPECT_DOUBLE_EQ(options.floor_end_max_depth_m, 2.5);
   EXPECT_DOUBLE_EQ(options.floor_end_clear_max_depth_m, 3.5);
