@@ -60,6 +60,23 @@ LocalizationOptions loadLocalizationOptions(IniSection& section) {
   position.distance_scale_sigma = section.getNonNegative("distance_scale_sigma", position.distance_scale_sigma);
   position.min_offset_sigma_m = section.getPositive("wall_min_offset_sigma_m", position.min_offset_sigma_m);
   position.max_join_gap_m = section.getNonNegative("wall_max_join_gap_m", position.max_join_gap_m);
+  FloorMotionOptions& floor = options.floor;
+  floor.enabled = section.getBool("floor_motion", floor.enabled);
+  floor.min_range_m = section.getNonNegative("floor_min_range_m", floor.min_range_m);
+  floor.max_range_m = section.getPositive("floor_max_range_m", floor.max_range_m);
+  if (!(floor.max_range_m > floor.min_range_m)) {
+    throw ConfigError("[" + section.name() + "] floor_max_range_m: must be above floor_min_range_m");
+  }
+  floor.disparity_tolerance_px = section.getPositive("floor_disparity_tolerance_px", floor.disparity_tolerance_px);
+  floor.pixel_step = section.getInt("floor_pixel_step", floor.pixel_step);
+  if (floor.pixel_step < 1) throw ConfigError("[" + section.name() + "] floor_pixel_step: must be >= 1");
+  floor.min_pixels = section.getInt("floor_min_pixels", floor.min_pixels);
+  if (floor.min_pixels < 10) throw ConfigError("[" + section.name() + "] floor_min_pixels: must be >= 10");
+  floor.max_disagreement_m = section.getNonNegative("floor_max_disagreement_m", floor.max_disagreement_m);
+  floor.max_disagreement_deg = section.getNonNegative("floor_max_disagreement_deg", floor.max_disagreement_deg);
+  floor.max_disagreement_fraction =
+      section.getNonNegative("floor_max_disagreement_fraction", floor.max_disagreement_fraction);
+  floor.wheel_turn_scale_sigma = section.getNonNegative("floor_wheel_turn_scale_sigma", floor.wheel_turn_scale_sigma);
   return options;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "common/ini_section.h"
+#include "localization/floor_motion.h"
 #include "localization/wall_heading_filter.h"
 #include "localization/wall_position_filter.h"
 
@@ -55,6 +56,10 @@ struct LocalizationOptions {
   // Keys wall_offsets (true/false), position_noise_per_m, distance_scale_sigma,
   // wall_min_offset_sigma_m, wall_max_join_gap_m.
   WallPositionOptions wall_position;
+  // Keys floor_motion (true/false), floor_min_range_m, floor_max_range_m,
+  // floor_disparity_tolerance_px, floor_pixel_step, floor_min_pixels, floor_max_disagreement_m,
+  // floor_max_disagreement_deg, floor_max_disagreement_fraction, floor_wheel_turn_scale_sigma.
+  FloorMotionOptions floor;
 
   bool matches() const { return window_m > 0.0 || window_deg > 0.0; }
 };
