@@ -35,8 +35,9 @@ WallHeadingFilter::State WallHeadingFilter::startState(bool direction_confirmed)
   return state;
 }
 
-double WallHeadingFilter::update(double turn_rad, double driven_m, std::vector<WallSegment> segments) {
-  frames_.push_back({turn_rad, driven_m, std::move(segments)});
+double WallHeadingFilter::update(double turn_rad, double driven_m, std::vector<WallSegment> segments,
+                                 double turn_sigma_rad) {
+  frames_.push_back({turn_rad, driven_m, std::move(segments), turn_sigma_rad});
   if (step(state_, frames_.back(), true)) {
     state_ = startState(true);
     for (const Frame& frame : frames_) step(state_, frame, false);
@@ -52,7 +53,8 @@ bool WallHeadingFilter::step(State& state, const Frame& frame, bool vote) {
   state.covariance = jacobian * state.covariance * jacobian.transpose();
   state.covariance(0, 0) += mrpt::square(mrpt::DEG2RAD(options_.heading_noise_deg_per_frame)) +
                             mrpt::square(options_.heading_noise_per_rad * frame.turn_rad) +
-                            mrpt::square(mrpt::DEG2RAD(options_.heading_noise_deg_per_m) * frame.driven_m);
+                            mrpt::square(mrpt::DEG2RAD(options_.heading_noise_deg_per_m) * frame.driven_m) +
+                            mrpt::square(frame.turn_sigma_rad);
   state.prediction = {state.heading, state.covariance(0, 0)};
   const double min_sigma = mrpt::DEG2RAD(options_.min_sigma_deg);
   const double max_correction = mrpt::DEG2RAD(options_.max_correction_deg);

@@ -69,7 +69,9 @@ class WallHeadingFilter {
 
   // The heading after a frame: the robot turned `turn_rad` (as odometry, or a scan match, measured
   // it) and drove `driven_m` since the last one, and saw `segments` (robot frame).
-  double update(double turn_rad, double driven_m, std::vector<WallSegment> segments);
+  // `turn_sigma_rad`: the turn's doubt beyond the options' noise (FloorOdometry's wheel steps).
+  double update(double turn_rad, double driven_m, std::vector<WallSegment> segments,
+                double turn_sigma_rad = 0.0);
 
   HeadingEstimate estimate() const { return {state_.heading, state_.covariance(0, 0)}; }
   // The last frame's heading before its segments corrected it: the one before, turned by odometry.
@@ -101,6 +103,7 @@ class WallHeadingFilter {
     double turn_rad = 0.0;
     double driven_m = 0.0;
     std::vector<WallSegment> segments;
+    double turn_sigma_rad = 0.0;
   };
   struct Candidate {
     double direction = 0.0;

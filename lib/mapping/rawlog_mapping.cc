@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "common/atomic_file.h"
+#include "localization/floor_motion.h"
 #include "localization/scan_localizer.h"
 #include "localization/tum_trajectory.h"
 #include "mapping/debug_panel.h"
@@ -116,6 +117,9 @@ class RawlogMappingRun {
     if (job_.pose_source == MapPoseSource::kLocalized) {
       localizer_ = std::make_unique<ScanLocalizer>(options_.localization,
                                                    rig.rig.reference.focal_px * rig.rig.baseline_m);
+      if (options_.localization.floor.enabled) {
+        floor_odometry_ = std::make_unique<FloorOdometry>(rig.rig, options_.localization.floor);
+      }
     }
     if (!job_.debug_panel_directory.empty()) {
       panels_ = std::make_unique<DebugPanelRenderer>(run_options_, rig.rig);
@@ -127,9 +131,16 @@ class RawlogMappingRun {
       case MapPoseSource::kOdometry:
         return odometry_;
       case MapPoseSource::kLocalized: {
+        mrpt::poses::CPose2D odometry = odometry_;
+        double turn_sigma = 0.0;
+        if (floor_odometry_) {
+          const DisparityScanner& scanner = mapper_->scanner();
+          odometry = floor_odometry_->update(odometry_, scanner.referenceGrey(), scanner.disparity());
+          turn_sigma = floor_odometry_->lastTurnSigma();
+        }
         const ScanMatch& match = localizer_->update(
-            odometry_, *mapper_->virtualScan(),
-            gridOfMap(mapper_->map(), options_.grid.stereo.update.scale));
+            odometry, *mapper_->virtualScan(), gridOfMap(mapper_->map(), options_.grid.stereo.update.scale),
+            turn_sigma);
         if (match.corrected) ++report_.frames_localized;
         return match.pose;
       }
@@ -167,6 +178,7 @@ class RawlogMappingRun {
   std::unique_ptr<StereoMapper> mapper_;
   std::unique_ptr<DebugPanelRenderer> panels_;
   std::unique_ptr<ScanLocalizer> localizer_;
+  std::unique_ptr<FloorOdometry> floor_odometry_;  // localized, with [localization] floor_motion
   std::vector<StampedPose> trajectory_;
   VirtualScanRecorder virtual_scans_;
   mrpt::poses::CPose2D odometry_;  // the last recorded; a frame without keeps it

@@ -135,5 +135,20 @@ TEST(WallHeadingFilterTest, WithoutWallsTheHeadingIsOdometrys) {
   EXPECT_DOUBLE_EQ(filter.turnScale(), 1.0);
 }
 
+TEST(WallHeadingFilterTest, ATurnsOwnDoubtAddsToTheHeadingsVariance) {
+  WallHeadingOptions options;
+  WallHeadingFilter plain(options, 0.0), doubtful(options, 0.0);
+  const double turn = 0.2, sigma = 0.01;
+  plain.update(turn, 0.0, {});
+  doubtful.update(turn, 0.0, {}, sigma);
+  // Without walls in view the heading is odometry's either way; only its doubt differs, by the
+  // turn's own variance.
+  EXPECT_DOUBLE_EQ(doubtful.estimate().heading, plain.estimate().heading);
+  EXPECT_NEAR(doubtful.estimate().variance - plain.estimate().variance, sigma * sigma, 1e-15);
+  const double expected_plain = mrpt::square(mrpt::DEG2RAD(options.heading_noise_deg_per_frame)) +
+                                mrpt::square(options.heading_noise_per_rad * turn);
+  EXPECT_NEAR(plain.estimate().variance, expected_plain, 1e-15);
+}
+
 }  // namespace
 }  // namespace stereonav
