@@ -110,8 +110,9 @@ FloorAlignment alignFloor(const CameraRig& rig, const FloorPixels& current, cons
       Eigen::Vector2d pixel;
       Eigen::Matrix2d by_floor;
       if (!projection.project(x, y, pixel, by_floor)) continue;
-      if (pixel.x() < 1.0 || pixel.y() < 1.0 || pixel.x() > previous_smoothed.cols - 3.0 ||
-          pixel.y() > previous_smoothed.rows - 3.0) {
+      // Written so that a NaN pixel (a diverged motion) is outside too.
+      if (!(pixel.x() >= 1.0 && pixel.y() >= 1.0 && pixel.x() <= previous_smoothed.cols - 3.0 &&
+            pixel.y() <= previous_smoothed.rows - 3.0)) {
         continue;
       }
       const double seen = bilinear(previous_smoothed, pixel.x(), pixel.y());
