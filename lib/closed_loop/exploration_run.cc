@@ -15,8 +15,7 @@
 #include "common/image_file.h"
 #include "evaluation/trajectory_error.h"
 #include "explorer/frontier_explorer.h"
-#include "localization/floor_motion.h"
-#include "localization/scan_localizer.h"
+#include "mapping/frame_localizer.h"
 #include "mapping/map_outputs.h"
 #include "mapping/stereo_mapper.h"
 #include "simulator/ground_truth_map.h"
@@ -102,12 +101,7 @@ class ClosedLoopMapper {
         robot_interface_(robot_interface),
         explorer_(explorer) {
     if (config.pose_source == MapPoseSource::kLocalized) {
-      const CameraRig& rig = config.simulator.rig;
-      localizer_ = std::make_unique<ScanLocalizer>(config.mapping.localization,
-                                                   rig.reference.focal_px * rig.baseline_m);
-      if (config.mapping.localization.floor.enabled) {
-        floor_odometry_ = std::make_unique<FloorOdometry>(rig, config.mapping.localization.floor);
-      }
+      localizer_ = std::make_unique<FrameLocalizer>(config.mapping.localization, config.simulator.rig);
     }
   }
 
@@ -116,14 +110,7 @@ class ClosedLoopMapper {
     const RigFrame rig_frame = rigFrameOf(frame, config_.simulator.rig);
     mapper_.observe(rig_frame);
     if (localizer_) {
-      mrpt::poses::CPose2D odometry = frame.odometry;
-      double turn_sigma = 0.0;
-      if (floor_odometry_) {
-        const DisparityScanner& scanner = mapper_.scanner();
-        odometry = floor_odometry_->update(frame.odometry, scanner.referenceGrey(), scanner.disparity());
-        turn_sigma = floor_odometry_->lastTurnSigma();
-      }
-      const ScanMatch& match = localizer_->update(odometry, *mapper_.virtualScan(), grid(), turn_sigma);
+      const ScanMatch& match = localizer_->update(frame.odometry, mapper_, grid());
       if (match.corrected) ++frames_localized_;
       robot_interface_.setLocalizedPose(match.pose, frame.odometry);
     }
@@ -145,8 +132,7 @@ class ClosedLoopMapper {
   StereoMapper mapper_;
   CSimulatedRobotInterface& robot_interface_;
   FrontierExplorer& explorer_;
-  std::unique_ptr<ScanLocalizer> localizer_;  // localized runs only
-  std::unique_ptr<FloorOdometry> floor_odometry_;  // localized, with [localization] floor_motion
+  std::unique_ptr<FrameLocalizer> localizer_;  // localized runs only
   size_t frames_localized_ = 0;
 };
 

@@ -103,7 +103,6 @@ FloorAlignment alignFloor(const CameraRig& rig, const FloorPixels& current, cons
     Eigen::Matrix<double, 5, 5> normal = Eigen::Matrix<double, 5, 5>::Zero();
     Eigen::Matrix<double, 5, 1> gradient = Eigen::Matrix<double, 5, 1>::Zero();
     residuals.clear();
-    double absolute_sum = 0.0;
     for (size_t i = 0; i < current.on_robot.size(); ++i) {
       const cv::Point2d& q = current.on_robot[i];
       const double x = p(0) + c * q.x - s * q.y, y = p(1) + s * q.x + c * q.y;
@@ -129,11 +128,9 @@ FloorAlignment alignFloor(const CameraRig& rig, const FloorPixels& current, cons
       normal += weight * jacobian.transpose() * jacobian;
       gradient += weight * jacobian.transpose() * residual;
       residuals.push_back(std::abs(residual));
-      absolute_sum += std::abs(residual);
     }
     result.pixels = static_cast<int>(residuals.size());
     if (residuals.size() < 10) return result;
-    result.residual = absolute_sum / static_cast<double>(residuals.size());
     // The next pass's Huber threshold: 1.5 robust sigmas of this pass's residuals.
     std::nth_element(residuals.begin(), residuals.begin() + residuals.size() / 2, residuals.end());
     huber = std::max(1.0, 1.5 * 1.4826 * residuals[residuals.size() / 2]);

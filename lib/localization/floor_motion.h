@@ -55,7 +55,6 @@ FloorPixels floorPixels(const CameraRig& rig, const cv::Mat1f& smoothed, const c
 struct FloorAlignment {
   mrpt::poses::CPose2D motion;  // this frame's robot pose in the previous frame's
   int pixels = 0;               // floor pixels that took part (seen in both frames)
-  double residual = 0.0;        // their mean absolute brightness difference after alignment
   bool converged = false;
 };
 

@@ -7,10 +7,9 @@
 #include <vector>
 
 #include "common/atomic_file.h"
-#include "localization/floor_motion.h"
-#include "localization/scan_localizer.h"
 #include "localization/tum_trajectory.h"
 #include "mapping/debug_panel.h"
+#include "mapping/frame_localizer.h"
 #include "mapping/map_outputs.h"
 #include "mapping/stereo_mapper.h"
 #include "mapping/virtual_scan_recorder.h"
@@ -115,11 +114,7 @@ class RawlogMappingRun {
     report_.calibration_warnings = std::move(rig.warnings);
     mapper_ = std::make_unique<StereoMapper>(run_options_, rig.rig);
     if (job_.pose_source == MapPoseSource::kLocalized) {
-      localizer_ = std::make_unique<ScanLocalizer>(options_.localization,
-                                                   rig.rig.reference.focal_px * rig.rig.baseline_m);
-      if (options_.localization.floor.enabled) {
-        floor_odometry_ = std::make_unique<FloorOdometry>(rig.rig, options_.localization.floor);
-      }
+      localizer_ = std::make_unique<FrameLocalizer>(options_.localization, rig.rig);
     }
     if (!job_.debug_panel_directory.empty()) {
       panels_ = std::make_unique<DebugPanelRenderer>(run_options_, rig.rig);
@@ -131,16 +126,8 @@ class RawlogMappingRun {
       case MapPoseSource::kOdometry:
         return odometry_;
       case MapPoseSource::kLocalized: {
-        mrpt::poses::CPose2D odometry = odometry_;
-        double turn_sigma = 0.0;
-        if (floor_odometry_) {
-          const DisparityScanner& scanner = mapper_->scanner();
-          odometry = floor_odometry_->update(odometry_, scanner.referenceGrey(), scanner.disparity());
-          turn_sigma = floor_odometry_->lastTurnSigma();
-        }
         const ScanMatch& match = localizer_->update(
-            odometry, *mapper_->virtualScan(), gridOfMap(mapper_->map(), options_.grid.stereo.update.scale),
-            turn_sigma);
+            odometry_, *mapper_, gridOfMap(mapper_->map(), options_.grid.stereo.update.scale));
         if (match.corrected) ++report_.frames_localized;
         return match.pose;
       }
@@ -177,8 +164,7 @@ class RawlogMappingRun {
   MappingReport& report_;
   std::unique_ptr<StereoMapper> mapper_;
   std::unique_ptr<DebugPanelRenderer> panels_;
-  std::unique_ptr<ScanLocalizer> localizer_;
-  std::unique_ptr<FloorOdometry> floor_odometry_;  // localized, with [localization] floor_motion
+  std::unique_ptr<FrameLocalizer> localizer_;
   std::vector<StampedPose> trajectory_;
   VirtualScanRecorder virtual_scans_;
   mrpt::poses::CPose2D odometry_;  // the last recorded; a frame without keeps it

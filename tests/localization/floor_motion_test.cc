@@ -50,6 +50,28 @@ FloorView viewFloor(const CameraRig& rig, const mrpt::poses::CPose2D& pose, doub
   return view;
 }
 
+// A robot driving over the textured floor, its floor odometry given every frame's view.
+struct FloorDrive {
+  const CameraRig& rig;
+  FloorOdometry& odometry;
+  mrpt::poses::CPose2D truth, wheels;
+  FloorView view;
+
+  // The view from where the robot is; stereo matches the floor unless `matched` is false.
+  mrpt::poses::CPose2D look(bool matched = true) {
+    view = viewFloor(rig, truth);
+    if (!matched) view.disparity.setTo(kInvalidDisparity);
+    return odometry.update(wheels, view.grey, view.disparity);
+  }
+  // Moves by `step`, the wheels reading `wheel_step`, and looks.
+  mrpt::poses::CPose2D drive(const mrpt::poses::CPose2D& step, const mrpt::poses::CPose2D& wheel_step,
+                             bool matched = true) {
+    truth = truth + step;
+    wheels = wheels + wheel_step;
+    return look(matched);
+  }
+};
+
 TEST(FloorMotionTest, FloorPixelsAreThoseWhoseDisparityIsTheFloorsAndLieWhereTheRaysMeetIt) {
   const CameraRig rig = floorRig();
   FloorView view = viewFloor(rig, mrpt::poses::CPose2D());
@@ -111,19 +133,14 @@ TEST(FloorMotionTest, OdometryFollowsTheFloorWhereTheWheelsReadLongAndKeepsThemW
   // The robot drives an arc; the wheels read every step 4% long and turn 2% too far.
   const mrpt::poses::CPose2D step(0.06, 0.0, mrpt::DEG2RAD(3.0));
   const mrpt::poses::CPose2D wheel_step(0.0624, 0.0, mrpt::DEG2RAD(3.06));
-  mrpt::poses::CPose2D truth(1.0, -0.5, 0.2);
-  mrpt::poses::CPose2D wheels(5.0, 5.0, 1.0);
-  FloorView view = viewFloor(rig, truth);
-  mrpt::poses::CPose2D pose = odometry.update(wheels, view.grey, view.disparity);
-  EXPECT_EQ(pose, wheels);  // the first frame: the wheels' pose, the frame it is chained in
-  mrpt::poses::CPose2D expected = wheels;
+  FloorDrive robot{rig, odometry, mrpt::poses::CPose2D(1.0, -0.5, 0.2), mrpt::poses::CPose2D(5.0, 5.0, 1.0), {}};
+  mrpt::poses::CPose2D pose = robot.look();
+  EXPECT_EQ(pose, robot.wheels);  // the first frame: the wheels' pose, the frame it is chained in
+  mrpt::poses::CPose2D expected = robot.wheels;
   constexpr int kSteps = 40;
   for (int i = 0; i < kSteps; ++i) {
-    truth = truth + step;
-    wheels = wheels + wheel_step;
     expected = expected + step;
-    view = viewFloor(rig, truth);
-    pose = odometry.update(wheels, view.grey, view.disparity);
+    pose = robot.drive(step, wheel_step);
   }
   EXPECT_EQ(odometry.measuredSteps(), kSteps);
   EXPECT_EQ(odometry.steps(), kSteps);
@@ -131,16 +148,16 @@ TEST(FloorMotionTest, OdometryFollowsTheFloorWhereTheWheelsReadLongAndKeepsThemW
   EXPECT_NEAR(pose.y(), expected.y(), 2e-3);
   EXPECT_NEAR(mrpt::RAD2DEG(mrpt::math::wrapToPi(pose.phi() - expected.phi())), 0.0, 0.05);
   // The wheels alone would be 10 cm and 2.4 degrees off by now.
-  EXPECT_GT(std::hypot(wheels.x() - expected.x(), wheels.y() - expected.y()), 0.05);
+  EXPECT_GT(std::hypot(robot.wheels.x() - expected.x(), robot.wheels.y() - expected.y()), 0.05);
   // What the floor measured of the wheels: 0.06 / 0.0624 of their distance, 3 / 3.06 of their turn.
   EXPECT_NEAR(odometry.distanceScale(), 0.06 / 0.0624, 2e-3);
   EXPECT_NEAR(odometry.turnScale(), 3.0 / 3.06, 2e-3);
 
   // Stereo matches nothing (a dark room): the step is the wheels', scaled as measured, which is
   // the true step.
-  view.disparity.setTo(kInvalidDisparity);
   const mrpt::poses::CPose2D before = pose;
-  pose = odometry.update(wheels + wheel_step, view.grey, view.disparity);
+  robot.view.disparity.setTo(kInvalidDisparity);
+  pose = odometry.update(robot.wheels + wheel_step, robot.view.grey, robot.view.disparity);
   EXPECT_EQ(odometry.measuredSteps(), kSteps);
   const mrpt::poses::CPose2D kept = before + step;
   EXPECT_NEAR(pose.x(), kept.x(), 2e-4);
@@ -177,16 +194,11 @@ TEST(FloorMotionTest, TurnsWithoutFloorBeforeTheWheelsAreMeasuredAreCorrectedOnc
   // wall): they are the wheels' own, with their doubt told to the localizer.
   const mrpt::poses::CPose2D step(0.0, 0.0, mrpt::DEG2RAD(10.0));
   const mrpt::poses::CPose2D wheel_step(0.0, 0.0, mrpt::DEG2RAD(10.2));
-  mrpt::poses::CPose2D truth(1.0, 2.0, 0.5);
-  mrpt::poses::CPose2D wheels = truth;
-  const cv::Mat1f unmatched(rig.reference.height, rig.reference.width, kInvalidDisparity);
-  FloorView view = viewFloor(rig, truth);
-  odometry.update(wheels, view.grey, unmatched);
+  const mrpt::poses::CPose2D start(1.0, 2.0, 0.5);
+  FloorDrive robot{rig, odometry, start, start, {}};
+  robot.look(false);
   for (int i = 0; i < 3; ++i) {
-    truth = truth + step;
-    wheels = wheels + wheel_step;
-    view = viewFloor(rig, truth);
-    odometry.update(wheels, view.grey, unmatched);
+    robot.drive(step, wheel_step, false);
     EXPECT_NEAR(odometry.lastTurnSigma(), options.wheel_turn_scale_sigma * mrpt::DEG2RAD(10.2), 1e-12);
   }
   EXPECT_EQ(odometry.measuredSteps(), 0);
@@ -194,17 +206,14 @@ TEST(FloorMotionTest, TurnsWithoutFloorBeforeTheWheelsAreMeasuredAreCorrectedOnc
   // the first three steps turned too far taken back.
   mrpt::poses::CPose2D pose;
   for (int i = 0; i < 10; ++i) {
-    truth = truth + step;
-    wheels = wheels + wheel_step;
-    view = viewFloor(rig, truth);
-    pose = odometry.update(wheels, view.grey, view.disparity);
+    pose = robot.drive(step, wheel_step);
     EXPECT_EQ(odometry.lastTurnSigma(), 0.0);
   }
   EXPECT_EQ(odometry.measuredSteps(), 10);
   EXPECT_NEAR(odometry.turnScale(), 1.0 / 1.02, 1e-3);
-  EXPECT_NEAR(mrpt::RAD2DEG(mrpt::math::wrapToPi(pose.phi() - truth.phi())), 0.0, 0.05);
-  EXPECT_NEAR(pose.x(), truth.x(), 1e-3);
-  EXPECT_NEAR(pose.y(), truth.y(), 1e-3);
+  EXPECT_NEAR(mrpt::RAD2DEG(mrpt::math::wrapToPi(pose.phi() - robot.truth.phi())), 0.0, 0.05);
+  EXPECT_NEAR(pose.x(), robot.truth.x(), 1e-3);
+  EXPECT_NEAR(pose.y(), robot.truth.y(), 1e-3);
 }
 
 TEST(FloorMotionTest, AnAlignmentFarFromTheWheelsIsRefused) {
