@@ -189,24 +189,23 @@ const mrpt::poses::CPose2D& FloorOdometry::update(const mrpt::poses::CPose2D& wh
     const mrpt::poses::CPose2D calibrated(distanceScale() * wheel_step.x(), distanceScale() * wheel_step.y(),
                                           turnScale() * wheel_step.phi());
     mrpt::poses::CPose2D step = calibrated;
+    last_turn_doubt_ = TurnDoubt();
     if (const auto measured = floorStep(smoothed, disparity, calibrated)) {
       step = *measured;
-      last_turn_sigma_ = 0.0;
       ++measured_steps_;
       distance_products_ += measured->x() * wheel_step.x();
       distance_squares_ += wheel_step.x() * wheel_step.x();
       turn_products_ += measured->phi() * wheel_step.phi();
       turn_squares_ += wheel_step.phi() * wheel_step.phi();
-    } else if (turnCalibrated()) {
-      last_turn_sigma_ = 0.0;
-    } else {
-      last_turn_sigma_ = options_.wheel_turn_scale_sigma * std::abs(wheel_step.phi());
+    } else if (!turnCalibrated()) {
+      last_turn_doubt_.sigma_rad = options_.wheel_turn_scale_sigma * std::abs(wheel_step.phi());
       uncalibrated_turn_ += wheel_step.phi();
     }
     // Once the wheels' turn scale is known, the wheel steps taken before it was are turned by it too.
     if (turnCalibrated() && uncalibrated_turn_ != 0.0) {
       step = step + mrpt::poses::CPose2D(0.0, 0.0, (turnScale() - 1.0) * uncalibrated_turn_);
       uncalibrated_turn_ = 0.0;
+      last_turn_doubt_.earlier_turns_scale = turnScale();
     }
     ++steps_;
     pose_ = pose_ + step;

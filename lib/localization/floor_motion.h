@@ -6,6 +6,7 @@
 #include <optional>
 #include <vector>
 
+#include "localization/turn_doubt.h"
 #include "rig/camera_rig.h"
 
 namespace stereonav {
@@ -81,8 +82,9 @@ class FloorOdometry {
   // Frames whose step came from the floor, and all frames after the first.
   int measuredSteps() const { return measured_steps_; }
   // The doubt of the last step's turn that the localizer's noise model of odometry does not
-  // cover: a wheel step's, radians, while the wheels' turn scale is not yet measured; else 0.
-  double lastTurnSigma() const { return last_turn_sigma_; }
+  // cover: a wheel step's while the wheels' turn scale is not yet measured, and on the step it
+  // is, the scale that corrected those wheel steps' turns.
+  const TurnDoubt& lastTurnDoubt() const { return last_turn_doubt_; }
   int steps() const { return steps_; }
   // What the floor measured per unit of the wheels' distance and turn (1 until it has seen
   // enough of both to tell).
@@ -103,7 +105,7 @@ class FloorOdometry {
   mrpt::poses::CPose2D pose_;
   int measured_steps_ = 0;
   int steps_ = 0;
-  double last_turn_sigma_ = 0.0;
+  TurnDoubt last_turn_doubt_;
   double uncalibrated_turn_ = 0.0;  // the wheel steps' turn taken before the scale was known
   // Least squares of floor = scale * wheels over the accepted steps, forward distance and turn.
   double distance_products_ = 0.0, distance_squares_ = 0.0;

@@ -18,7 +18,7 @@ ScanLocalizer::ScanLocalizer(const LocalizationOptions& options, double focal_ba
 
 const ScanMatch& ScanLocalizer::update(const mrpt::poses::CPose2D& odometry,
                                        const mrpt::obs::CObservation2DRangeScan& scan,
-                                       const DisparityTaggedGrid& map, double turn_sigma_rad) {
+                                       const DisparityTaggedGrid& map, const TurnDoubt& turn_doubt) {
   const mrpt::poses::CPose2D motion =
       last_odometry_ ? odometry - *last_odometry_ : mrpt::poses::CPose2D();
   const mrpt::poses::CPose2D previous = last_odometry_ ? last_match_.pose : odometry;
@@ -39,7 +39,7 @@ const ScanMatch& ScanLocalizer::update(const mrpt::poses::CPose2D& odometry,
   const std::vector<WallSegment> segments = wallSegments(scan, options_.walls.segments);
   // The motion as matched where the match pinned it down, as odometry measured it otherwise.
   const mrpt::poses::CPose2D moved = last_match_.pose - previous;
-  wall_heading_->update(moved.phi(), motion.norm(), segments, turn_sigma_rad);
+  wall_heading_->update(moved.phi(), motion.norm(), segments, turn_doubt);
   const HeadingEstimate heading = wall_heading_->estimate();
   const Eigen::Vector2d position =
       wall_position_->update(Eigen::Vector2d(moved.x(), moved.y()), previous.phi(), wall_heading_->prediction(),

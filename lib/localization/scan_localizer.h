@@ -32,11 +32,11 @@ class ScanLocalizer {
   // `focal_baseline_px_m`: f B of the stereo head (readings' range errors, matchablePoints).
   ScanLocalizer(const LocalizationOptions& options, double focal_baseline_px_m);
 
-  // `turn_sigma_rad`: the doubt of odometry's turn since the last frame beyond what the options
-  // say of odometry (FloorOdometry::lastTurnSigma).
+  // `turn_doubt`: the doubt of odometry's turn since the last frame beyond what the options
+  // say of odometry (FloorOdometry::lastTurnDoubt).
   const ScanMatch& update(const mrpt::poses::CPose2D& odometry,
                           const mrpt::obs::CObservation2DRangeScan& scan,
-                          const DisparityTaggedGrid& map, double turn_sigma_rad = 0.0);
+                          const DisparityTaggedGrid& map, const TurnDoubt& turn_doubt = {});
 
   // The last corrected pose (the origin before the first update).
   const mrpt::poses::CPose2D& pose() const { return last_match_.pose; }

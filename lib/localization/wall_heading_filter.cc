@@ -35,13 +35,28 @@ WallHeadingFilter::State WallHeadingFilter::startState(bool direction_confirmed)
   return state;
 }
 
+WallHeadingFilter::State WallHeadingFilter::rerun() {
+  State state = startState(!confirmed_.empty());
+  for (const Frame& frame : frames_) step(state, frame, false);
+  return state;
+}
+
 double WallHeadingFilter::update(double turn_rad, double driven_m, std::vector<WallSegment> segments,
-                                 double turn_sigma_rad) {
-  frames_.push_back({turn_rad, driven_m, std::move(segments), turn_sigma_rad});
-  if (step(state_, frames_.back(), true)) {
-    state_ = startState(true);
-    for (const Frame& frame : frames_) step(state_, frame, false);
+                                 const TurnDoubt& doubt) {
+  if (doubt.earlier_turns_scale) {
+    // The doubtful turns are corrected where they were taken (the walls first seen after them
+    // with them), and this frame's turn loses the correction odometry added to it.
+    const double scale = *doubt.earlier_turns_scale;
+    for (Frame& frame : frames_) {
+      if (frame.turn_sigma_rad == 0.0) continue;
+      turn_rad -= (scale - 1.0) * frame.turn_rad;
+      frame.turn_rad *= scale;
+      frame.turn_sigma_rad = 0.0;
+    }
+    state_ = rerun();
   }
+  frames_.push_back({turn_rad, driven_m, std::move(segments), doubt.sigma_rad});
+  if (step(state_, frames_.back(), true)) state_ = rerun();
   return state_.heading;
 }
 

@@ -4,6 +4,7 @@
 
 #include <Eigen/Core>
 
+#include "localization/turn_doubt.h"
 #include "localization/wall_segments.h"
 
 namespace stereonav {
@@ -69,9 +70,10 @@ class WallHeadingFilter {
 
   // The heading after a frame: the robot turned `turn_rad` (as odometry, or a scan match, measured
   // it) and drove `driven_m` since the last one, and saw `segments` (robot frame).
-  // `turn_sigma_rad`: the turn's doubt beyond the options' noise (FloorOdometry's wheel steps).
+  // `doubt`: the turn's doubt beyond the options' noise (FloorOdometry's wheel steps); when it
+  // brings the scale of the earlier doubtful turns, the filter runs again with them corrected.
   double update(double turn_rad, double driven_m, std::vector<WallSegment> segments,
-                double turn_sigma_rad = 0.0);
+                const TurnDoubt& doubt = {});
 
   HeadingEstimate estimate() const { return {state_.heading, state_.covariance(0, 0)}; }
   // The last frame's heading before its segments corrected it: the one before, turned by odometry.
@@ -120,6 +122,8 @@ class WallHeadingFilter {
   void correct(State& state, size_t direction, double innovation, double sigma) const;
   bool voteFor(double world_direction, double sigma);
   State startState(bool direction_confirmed) const;
+  // The state after running every frame so far again, from the start.
+  State rerun();
 
   WallHeadingOptions options_;
   double start_heading_;

@@ -13,7 +13,7 @@ const ScanMatch& FrameLocalizer::update(const mrpt::poses::CPose2D& odometry, co
   const DisparityScanner& scanner = mapper.scanner();
   const mrpt::poses::CPose2D& measured =
       floor_odometry_->update(odometry, scanner.referenceGrey(), scanner.disparity());
-  return scan_localizer_.update(measured, *mapper.virtualScan(), map, floor_odometry_->lastTurnSigma());
+  return scan_localizer_.update(measured, *mapper.virtualScan(), map, floor_odometry_->lastTurnDoubt());
 }
 
 }  // namespace stereonav

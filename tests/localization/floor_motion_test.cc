@@ -199,16 +199,23 @@ TEST(FloorMotionTest, TurnsWithoutFloorBeforeTheWheelsAreMeasuredAreCorrectedOnc
   robot.look(false);
   for (int i = 0; i < 3; ++i) {
     robot.drive(step, wheel_step, false);
-    EXPECT_NEAR(odometry.lastTurnSigma(), options.wheel_turn_scale_sigma * mrpt::DEG2RAD(10.2), 1e-12);
+    EXPECT_NEAR(odometry.lastTurnDoubt().sigma_rad, options.wheel_turn_scale_sigma * mrpt::DEG2RAD(10.2), 1e-12);
+    EXPECT_FALSE(odometry.lastTurnDoubt().earlier_turns_scale);
   }
   EXPECT_EQ(odometry.measuredSteps(), 0);
   // Then the floor: once the turn scale is measured, the pose is the true one, the 0.6 degrees
-  // the first three steps turned too far taken back.
+  // the first three steps turned too far taken back, and the localizer is told their scale once.
   mrpt::poses::CPose2D pose;
+  int scales_told = 0;
   for (int i = 0; i < 10; ++i) {
     pose = robot.drive(step, wheel_step);
-    EXPECT_EQ(odometry.lastTurnSigma(), 0.0);
+    EXPECT_EQ(odometry.lastTurnDoubt().sigma_rad, 0.0);
+    if (const auto scale = odometry.lastTurnDoubt().earlier_turns_scale) {
+      ++scales_told;
+      EXPECT_DOUBLE_EQ(*scale, odometry.turnScale());
+    }
   }
+  EXPECT_EQ(scales_told, 1);
   EXPECT_EQ(odometry.measuredSteps(), 10);
   EXPECT_NEAR(odometry.turnScale(), 1.0 / 1.02, 1e-3);
   EXPECT_NEAR(mrpt::RAD2DEG(mrpt::math::wrapToPi(pose.phi() - robot.truth.phi())), 0.0, 0.05);

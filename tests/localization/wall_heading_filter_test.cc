@@ -140,7 +140,7 @@ TEST(WallHeadingFilterTest, ATurnsOwnDoubtAddsToTheHeadingsVariance) {
   WallHeadingFilter plain(options, 0.0), doubtful(options, 0.0);
   const double turn = 0.2, sigma = 0.01;
   plain.update(turn, 0.0, {});
-  doubtful.update(turn, 0.0, {}, sigma);
+  doubtful.update(turn, 0.0, {}, TurnDoubt{sigma, std::nullopt});
   // Without walls in view the heading is odometry's either way; only its doubt differs, by the
   // turn's own variance.
   EXPECT_DOUBLE_EQ(doubtful.estimate().heading, plain.estimate().heading);
@@ -148,6 +148,39 @@ TEST(WallHeadingFilterTest, ATurnsOwnDoubtAddsToTheHeadingsVariance) {
   const double expected_plain = mrpt::square(mrpt::DEG2RAD(options.heading_noise_deg_per_frame)) +
                                 mrpt::square(options.heading_noise_per_rad * turn);
   EXPECT_NEAR(plain.estimate().variance, expected_plain, 1e-15);
+}
+
+TEST(WallHeadingFilterTest, DoubtfulTurnsAreCorrectedWhereTheyWereTakenOnceTheirScaleIsKnown) {
+  // Spinning by 0.2 rad per frame from heading 0 with a wall along 0 in view from frame 2 on.
+  // Frames 1-4 are wheel turns read 2% large, with their doubt; from frame 5 on the turns are
+  // measured exactly, and frame 5's also takes back the 4 * 0.204 * 0.02 / 1.02 rad (0.92
+  // degrees) the wheels turned too far, telling the filter their scale. The walls first seen
+  // during frames 2-4 were seen from headings 0.5-0.9 degrees off: with those turns corrected
+  // where they were taken, every segment agrees with the heading and the wall's direction, and
+  // both are exact; as one late turn, the filter would have to choose between the walls and it.
+  WallHeadingOptions options;
+  options.new_direction_segments = 4;
+  WallHeadingFilter filter(options, 0.0);
+  const double true_turn = 0.2, wheel_turn = 0.204, scale = 1.0 / 1.02;
+  double truth = 0.0;
+  filter.update(0.0, 0.0, {});
+  for (int frame = 1; frame <= 12; ++frame) {
+    truth += true_turn;
+    const double wall_seen_deg = mrpt::RAD2DEG(mrpt::math::wrapToPi(-truth));
+    std::vector<WallSegment> segments;
+    if (frame >= 2) segments = {segmentAlong(wall_seen_deg), segmentAlong(wall_seen_deg)};
+    if (frame <= 4) {
+      filter.update(wheel_turn, 0.0, segments, TurnDoubt{0.05 * wheel_turn, std::nullopt});
+    } else if (frame == 5) {
+      filter.update(true_turn + (scale - 1.0) * 4 * wheel_turn, 0.0, segments, TurnDoubt{0.0, scale});
+    } else {
+      filter.update(true_turn, 0.0, segments);
+    }
+  }
+  ASSERT_EQ(filter.directions().size(), 1u);
+  EXPECT_NEAR(filter.directions()[0], 0.0, 1e-9);
+  EXPECT_NEAR(mrpt::math::wrapToPi(filter.estimate().heading - truth), 0.0, 1e-9);
+  EXPECT_NEAR(filter.turnScale(), 1.0, 1e-9);
 }
 
 }  // namespace

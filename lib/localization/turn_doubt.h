@@ -1,0 +1,18 @@
+#pragma once
+
+#include <optional>
+
+namespace stereonav {
+
+// What the heading filter must know of odometry's last turn beyond its noise model
+// (FloorOdometry's wheel steps taken before the floor has measured the wheels' turn scale).
+struct TurnDoubt {
+  double sigma_rad = 0.0;  // one sigma of this turn's error, radians
+  // Set on the step the scale becomes known: the earlier doubtful turns were off by this factor,
+  // and this step's turn already includes their correction (odometry's pose is right at once).
+  // Fixing those turns where they were taken, rather than as one late turn, keeps the wall
+  // directions first seen during them right too.
+  std::optional<double> earlier_turns_scale;
+};
+
+}  // namespace stereonav
