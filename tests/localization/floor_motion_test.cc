@@ -156,8 +156,7 @@ TEST(FloorMotionTest, OdometryFollowsTheFloorWhereTheWheelsReadLongAndKeepsThemW
   // Stereo matches nothing (a dark room): the step is the wheels', scaled as measured, which is
   // the true step.
   const mrpt::poses::CPose2D before = pose;
-  robot.view.disparity.setTo(kInvalidDisparity);
-  pose = odometry.update(robot.wheels + wheel_step, robot.view.grey, robot.view.disparity);
+  pose = robot.drive(step, wheel_step, false);
   EXPECT_EQ(odometry.measuredSteps(), kSteps);
   const mrpt::poses::CPose2D kept = before + step;
   EXPECT_NEAR(pose.x(), kept.x(), 2e-4);
