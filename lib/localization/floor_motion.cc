@@ -197,9 +197,14 @@ const mrpt::poses::CPose2D& FloorOdometry::update(const mrpt::poses::CPose2D& wh
       distance_squares_ += wheel_step.x() * wheel_step.x();
       turn_products_ += measured->phi() * wheel_step.phi();
       turn_squares_ += wheel_step.phi() * wheel_step.phi();
-    } else if (!turnCalibrated()) {
-      last_turn_doubt_.sigma_rad = options_.wheel_turn_scale_sigma * std::abs(wheel_step.phi());
-      uncalibrated_turn_ += wheel_step.phi();
+    } else {
+      last_turn_doubt_.sigma_rad =
+          std::hypot(options_.wheel_turn_noise_per_rad * wheel_step.phi(),
+                     mrpt::DEG2RAD(options_.wheel_heading_noise_deg_per_m) * wheel_step.x());
+      if (!turnCalibrated()) {
+        last_turn_doubt_.scale_sigma_rad = options_.wheel_turn_scale_sigma * std::abs(wheel_step.phi());
+        uncalibrated_turn_ += wheel_step.phi();
+      }
     }
     // Once the wheels' turn scale is known, the wheel steps taken before it was are turned by it too.
     if (turnCalibrated() && uncalibrated_turn_ != 0.0) {

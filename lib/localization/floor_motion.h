@@ -35,6 +35,10 @@ struct FloorMotionOptions {
   // How far the wheels' turns may be off in scale before the floor has measured it: the doubt of
   // a wheel step's turn until then (a wheel base off its nominal length).
   double wheel_turn_scale_sigma = 0.05;
+  // The wheels' own random turn error per step, which the floor's steps do not have: the
+  // localizer's noise model then describes the floor's steps, and each wheel step adds this.
+  double wheel_turn_noise_per_rad = 0.0;
+  double wheel_heading_noise_deg_per_m = 0.0;
 };
 
 // One frame's floor: its pixels on the floor plane, on the robot, with their brightness.

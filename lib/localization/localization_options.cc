@@ -77,6 +77,10 @@ LocalizationOptions loadLocalizationOptions(IniSection& section) {
   floor.max_disagreement_fraction =
       section.getNonNegative("floor_max_disagreement_fraction", floor.max_disagreement_fraction);
   floor.wheel_turn_scale_sigma = section.getNonNegative("floor_wheel_turn_scale_sigma", floor.wheel_turn_scale_sigma);
+  floor.wheel_turn_noise_per_rad =
+      section.getNonNegative("floor_wheel_turn_noise_per_rad", floor.wheel_turn_noise_per_rad);
+  floor.wheel_heading_noise_deg_per_m =
+      section.getNonNegative("floor_wheel_heading_noise_deg_per_m", floor.wheel_heading_noise_deg_per_m);
   return options;
 }
 

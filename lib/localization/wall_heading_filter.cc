@@ -48,14 +48,14 @@ double WallHeadingFilter::update(double turn_rad, double driven_m, std::vector<W
     // with them), and this frame's turn loses the correction odometry added to it.
     const double scale = *doubt.earlier_turns_scale;
     for (Frame& frame : frames_) {
-      if (frame.turn_sigma_rad == 0.0) continue;
+      if (frame.turn_scale_sigma_rad == 0.0) continue;
       turn_rad -= (scale - 1.0) * frame.turn_rad;
       frame.turn_rad *= scale;
-      frame.turn_sigma_rad = 0.0;
+      frame.turn_scale_sigma_rad = 0.0;
     }
     state_ = rerun();
   }
-  frames_.push_back({turn_rad, driven_m, std::move(segments), doubt.sigma_rad});
+  frames_.push_back({turn_rad, driven_m, std::move(segments), doubt.sigma_rad, doubt.scale_sigma_rad});
   if (step(state_, frames_.back(), true)) state_ = rerun();
   return state_.heading;
 }
@@ -69,7 +69,7 @@ bool WallHeadingFilter::step(State& state, const Frame& frame, bool vote) {
   state.covariance(0, 0) += mrpt::square(mrpt::DEG2RAD(options_.heading_noise_deg_per_frame)) +
                             mrpt::square(options_.heading_noise_per_rad * frame.turn_rad) +
                             mrpt::square(mrpt::DEG2RAD(options_.heading_noise_deg_per_m) * frame.driven_m) +
-                            mrpt::square(frame.turn_sigma_rad);
+                            mrpt::square(frame.turn_sigma_rad) + mrpt::square(frame.turn_scale_sigma_rad);
   state.prediction = {state.heading, state.covariance(0, 0)};
   const double min_sigma = mrpt::DEG2RAD(options_.min_sigma_deg);
   const double max_correction = mrpt::DEG2RAD(options_.max_correction_deg);

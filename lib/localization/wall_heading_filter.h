@@ -106,6 +106,7 @@ class WallHeadingFilter {
     double driven_m = 0.0;
     std::vector<WallSegment> segments;
     double turn_sigma_rad = 0.0;
+    double turn_scale_sigma_rad = 0.0;  // zeroed once the turn is corrected by the measured scale
   };
   struct Candidate {
     double direction = 0.0;

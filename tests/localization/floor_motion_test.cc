@@ -168,6 +168,8 @@ TEST(FloorMotionTest, WithoutFloorFromTheStartOdometryIsTheWheels) {
   const CameraRig rig = floorRig();
   FloorMotionOptions options;
   options.enabled = true;
+  options.wheel_turn_noise_per_rad = 0.01;
+  options.wheel_heading_noise_deg_per_m = 0.14;
   FloorOdometry odometry(rig, options);
   const cv::Mat1b dark(rig.reference.height, rig.reference.width, uchar{0});
   const cv::Mat1f unmatched(rig.reference.height, rig.reference.width, kInvalidDisparity);
@@ -178,6 +180,12 @@ TEST(FloorMotionTest, WithoutFloorFromTheStartOdometryIsTheWheels) {
     EXPECT_NEAR(pose.x(), wheels.x(), 1e-9);
     EXPECT_NEAR(pose.y(), wheels.y(), 1e-9);
     EXPECT_NEAR(pose.phi(), wheels.phi(), 1e-9);
+    if (i == 0) continue;
+    // Each wheel step's doubt, by hand: its random part from 0.05 rad turned and 0.1 m driven,
+    // sqrt((0.01 * 0.05)^2 + (0.14 deg * 0.1)^2) = 0.5565 mrad, and the unmeasured turn scale's
+    // 0.05 * 0.05 rad.
+    EXPECT_NEAR(odometry.lastTurnDoubt().sigma_rad, 0.5565e-3, 1e-7);
+    EXPECT_NEAR(odometry.lastTurnDoubt().scale_sigma_rad, 2.5e-3, 1e-12);
   }
   EXPECT_EQ(odometry.measuredSteps(), 0);
   EXPECT_EQ(odometry.distanceScale(), 1.0);
@@ -188,6 +196,7 @@ TEST(FloorMotionTest, TurnsWithoutFloorBeforeTheWheelsAreMeasuredAreCorrectedOnc
   const CameraRig rig = floorRig();
   FloorMotionOptions options;
   options.enabled = true;
+  options.wheel_turn_noise_per_rad = 0.01;
   FloorOdometry odometry(rig, options);
   // Turning on the spot, the wheels 2% large. The first three steps see no floor (facing a
   // wall): they are the wheels' own, with their doubt told to the localizer.
@@ -198,7 +207,9 @@ TEST(FloorMotionTest, TurnsWithoutFloorBeforeTheWheelsAreMeasuredAreCorrectedOnc
   robot.look(false);
   for (int i = 0; i < 3; ++i) {
     robot.drive(step, wheel_step, false);
-    EXPECT_NEAR(odometry.lastTurnDoubt().sigma_rad, options.wheel_turn_scale_sigma * mrpt::DEG2RAD(10.2), 1e-12);
+    EXPECT_NEAR(odometry.lastTurnDoubt().scale_sigma_rad, options.wheel_turn_scale_sigma * mrpt::DEG2RAD(10.2),
+                1e-12);
+    EXPECT_NEAR(odometry.lastTurnDoubt().sigma_rad, 0.01 * mrpt::DEG2RAD(10.2), 1e-12);
     EXPECT_FALSE(odometry.lastTurnDoubt().earlier_turns_scale);
   }
   EXPECT_EQ(odometry.measuredSteps(), 0);
@@ -208,7 +219,9 @@ TEST(FloorMotionTest, TurnsWithoutFloorBeforeTheWheelsAreMeasuredAreCorrectedOnc
   int scales_told = 0;
   for (int i = 0; i < 10; ++i) {
     pose = robot.drive(step, wheel_step);
+    // A step the floor measured carries none of the wheels' doubt.
     EXPECT_EQ(odometry.lastTurnDoubt().sigma_rad, 0.0);
+    EXPECT_EQ(odometry.lastTurnDoubt().scale_sigma_rad, 0.0);
     if (const auto scale = odometry.lastTurnDoubt().earlier_turns_scale) {
       ++scales_told;
       EXPECT_DOUBLE_EQ(*scale, odometry.turnScale());

@@ -140,7 +140,7 @@ TEST(WallHeadingFilterTest, ATurnsOwnDoubtAddsToTheHeadingsVariance) {
   WallHeadingFilter plain(options, 0.0), doubtful(options, 0.0);
   const double turn = 0.2, sigma = 0.01;
   plain.update(turn, 0.0, {});
-  doubtful.update(turn, 0.0, {}, TurnDoubt{sigma, std::nullopt});
+  doubtful.update(turn, 0.0, {}, TurnDoubt{0.0, sigma, std::nullopt});
   // Without walls in view the heading is odometry's either way; only its doubt differs, by the
   // turn's own variance.
   EXPECT_DOUBLE_EQ(doubtful.estimate().heading, plain.estimate().heading);
@@ -148,6 +148,22 @@ TEST(WallHeadingFilterTest, ATurnsOwnDoubtAddsToTheHeadingsVariance) {
   const double expected_plain = mrpt::square(mrpt::DEG2RAD(options.heading_noise_deg_per_frame)) +
                                 mrpt::square(options.heading_noise_per_rad * turn);
   EXPECT_NEAR(plain.estimate().variance, expected_plain, 1e-15);
+}
+
+TEST(WallHeadingFilterTest, MeasuringTheWheelsScaleRemovesItsDoubtButNotTheirRandomError) {
+  WallHeadingOptions options;
+  options.heading_noise_per_rad = 0.0;  // the variance then does not depend on the turns' sizes
+  WallHeadingFilter filter(options, 0.0);
+  const double random_sigma = 0.002, scale_sigma = 0.01;
+  filter.update(0.2, 0.0, {}, TurnDoubt{random_sigma, scale_sigma, std::nullopt});
+  filter.update(0.2, 0.0, {}, TurnDoubt{random_sigma, scale_sigma, std::nullopt});
+  const double per_frame = mrpt::square(mrpt::DEG2RAD(options.heading_noise_deg_per_frame));
+  EXPECT_NEAR(filter.estimate().variance,
+              2 * (per_frame + mrpt::square(random_sigma) + mrpt::square(scale_sigma)), 1e-15);
+  // The scale becomes known: the two wheel turns are corrected, so their scale's doubt goes; the
+  // wheels' random error in each stays.
+  filter.update(0.2, 0.0, {}, TurnDoubt{0.0, 0.0, 0.98});
+  EXPECT_NEAR(filter.estimate().variance, 3 * per_frame + 2 * mrpt::square(random_sigma), 1e-15);
 }
 
 TEST(WallHeadingFilterTest, DoubtfulTurnsAreCorrectedWhereTheyWereTakenOnceTheirScaleIsKnown) {
@@ -170,9 +186,9 @@ TEST(WallHeadingFilterTest, DoubtfulTurnsAreCorrectedWhereTheyWereTakenOnceTheir
     std::vector<WallSegment> segments;
     if (frame >= 2) segments = {segmentAlong(wall_seen_deg), segmentAlong(wall_seen_deg)};
     if (frame <= 4) {
-      filter.update(wheel_turn, 0.0, segments, TurnDoubt{0.05 * wheel_turn, std::nullopt});
+      filter.update(wheel_turn, 0.0, segments, TurnDoubt{0.0, 0.05 * wheel_turn, std::nullopt});
     } else if (frame == 5) {
-      filter.update(true_turn + (scale - 1.0) * 4 * wheel_turn, 0.0, segments, TurnDoubt{0.0, scale});
+      filter.update(true_turn + (scale - 1.0) * 4 * wheel_turn, 0.0, segments, TurnDoubt{0.0, 0.0, scale});
     } else {
       filter.update(true_turn, 0.0, segments);
     }
