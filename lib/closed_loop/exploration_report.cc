@@ -64,6 +64,7 @@ std::string ExplorationReport::toJson() const {
       .key("max_heading_deg").value(trajectory_error.max_heading_deg)
       .endObject()
       .key("frames_localized").value(frames_localized)
+      .key("frames_floor_measured").value(frames_floor_measured)
       .key("start_pose").beginArray().value(start_x).value(start_y).value(start_phi).endArray()
       .key("stop_reason").value(stop_reason)
       .key("time_to_coverage_s").beginObject();

@@ -37,6 +37,7 @@ struct ExplorationReport {
   // Of the poses the map was built at against the true ones, one per frame (zero with true poses).
   TrajectoryError trajectory_error;
   size_t frames_localized = 0;  // frames the scan matching corrected (pose_source = localized)
+  size_t frames_floor_measured = 0;  // frames whose step was measured on the floor (floor_motion)
   int collisions = 0;           // contacts the simulator counted (robot_options' footprint)
   std::vector<CollisionEvent> collision_events;
   int blocked_reversals = 0;    // times the explorer found itself blocked and reversed

@@ -126,6 +126,7 @@ class ClosedLoopMapper {
   DisparityTaggedGrid grid() const { return gridOfMap(mapper_.map(), config_.mapping.grid.stereo.update.scale); }
   const StereoMapper& mapper() const { return mapper_; }
   size_t framesLocalized() const { return frames_localized_; }
+  size_t framesFloorMeasured() const { return localizer_ ? localizer_->floorMeasuredSteps() : 0; }
 
  private:
   const ExplorationConfig& config_;
@@ -233,6 +234,7 @@ ExplorationReport runExploration(const World& world, const ExplorationConfig& co
   fillFromSimulation(report, simulation, start, config.simulator.simulation.frame_rate_hz);
   report.pipeline_ms_per_frame = mapper.mapper().times().meanFrameMs();
   report.frames_localized = mapper.framesLocalized();
+  report.frames_floor_measured = mapper.framesFloorMeasured();
   if (!map_path.empty()) report.trajectory_error = trajectoryError(map_path, true_path);
   const DisparityTaggedGrid grid = mapper.grid();
   report.coverage = reachable.measure(grid);

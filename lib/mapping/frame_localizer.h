@@ -27,6 +27,8 @@ class FrameLocalizer {
   // The last frame `mapper` observed, at the wheels' `odometry`, against the map before it.
   const ScanMatch& update(const mrpt::poses::CPose2D& odometry, const StereoMapper& mapper,
                           const DisparityTaggedGrid& map);
+  // Frames whose step the floor measured (0 without floor_motion): the rest are the wheels'.
+  int floorMeasuredSteps() const { return floor_odometry_ ? floor_odometry_->measuredSteps() : 0; }
 
  private:
   ScanLocalizer scan_localizer_;

@@ -32,6 +32,7 @@ std::string MappingReport::summary() const {
     text << "; " << frames_without_odometry << " frames without odometry (mapped at the previous pose)";
   }
   if (frames_localized > 0) text << "; " << frames_localized << " frames corrected by scan matching";
+  if (frames_floor_measured > 0) text << "; " << frames_floor_measured << " steps measured on the floor";
   if (damage) text << "; stopped at damage: " << damage->describe(rawlog_path);
   if (interrupted) text << "; interrupted (Ctrl-C), map saved so far";
   return text.str();
@@ -45,6 +46,7 @@ std::string MappingReport::toJson() const {
       .key("frames").value(frames_mapped)
       .key("frames_without_odometry").value(frames_without_odometry)
       .key("frames_localized").value(frames_localized)
+      .key("frames_floor_measured").value(frames_floor_measured)
       .key("skipped_frames").beginObject().key("total").value(skipped.total());
   for (size_t reason = 0; reason < kRejectReasonCount; ++reason) {
     json.key(kRejectReasonKeys[reason]).value(skipped.count[reason]);

@@ -18,6 +18,7 @@ struct MappingReport {
   size_t frames_without_odometry = 0;  // mapped at the previous frame's pose
   // With localized poses: frames whose scan match corrected odometry (the others kept it).
   size_t frames_localized = 0;
+  size_t frames_floor_measured = 0;  // frames whose step was measured on the floor (floor_motion)
   std::vector<mrpt::poses::CPose2D> path;  // the pose each frame was mapped at
   SkippedFrames skipped;
   std::optional<RawlogDamage> damage;  // where reading stopped, if the rawlog is damaged

@@ -129,6 +129,7 @@ class RawlogMappingRun {
         const ScanMatch& match = localizer_->update(
             odometry_, *mapper_, gridOfMap(mapper_->map(), options_.grid.stereo.update.scale));
         if (match.corrected) ++report_.frames_localized;
+        report_.frames_floor_measured = localizer_->floorMeasuredSteps();
         return match.pose;
       }
       case MapPoseSource::kGroundTruth:

@@ -101,6 +101,9 @@ TEST(ExplorationRunTest, ALocalizedRunReplaysToTheSameMapAndEveryRunReportsItsPo
   // A base whose distances read 3% long and turns 5% large: its dead reckoning drifts at once.
   config.simulator.robot.odometry_distance_bias = 0.03;
   config.simulator.robot.odometry_turn_bias = 0.05;
+  // Each step measured on the floor where it is in view (as ini/explore_320x240.ini does): the
+  // replay must measure the same steps.
+  config.mapping.localization.floor.enabled = true;
   const std::string directory = outputDirectory("localized");
   ExplorationJob job;
   job.max_time_s = 30.0;
@@ -133,6 +136,10 @@ TEST(ExplorationRunTest, ALocalizedRunReplaysToTheSameMapAndEveryRunReportsItsPo
   replay.pose_source = MapPoseSource::kLocalized;
   const MappingReport replayed = mapRawlog(config.mapping, replay);
   EXPECT_EQ(replayed.frames_localized, localized.frames_localized);
+  // The first frame has no step, and some look at a wall with no floor in view.
+  EXPECT_GT(localized.frames_floor_measured, 0u);
+  EXPECT_LT(localized.frames_floor_measured, localized.frames);
+  EXPECT_EQ(replayed.frames_floor_measured, localized.frames_floor_measured);
   const std::vector<mrpt::poses::CPose2D> explored_path = loadPoseList(job.output_prefix + ".path.txt");
   ASSERT_EQ(replayed.path.size(), explored_path.size());
   for (size_t i = 0; i < explored_path.size(); ++i) {
