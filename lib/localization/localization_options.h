@@ -51,7 +51,8 @@ struct LocalizationOptions {
   // wall_min_length_m, wall_min_sigma_deg, heading_noise_deg_per_frame, heading_noise_per_rad,
   // heading_noise_deg_per_m, turn_scale_sigma, wall_gate_sigmas, wall_max_correction_deg,
   // wall_new_direction_segments, wall_new_direction_spread_deg, wall_agreeing_segments.
-  // wall_max_range_m = 0: no walls.
+  // wall_max_range_m = 0: no walls. With floor_motion, turn_scale_sigma and distance_scale_sigma
+  // default to 0: the floor measures odometry's scales.
   WallHeadingOptions walls;
   // Keys wall_offsets (true/false), position_noise_per_m, distance_scale_sigma,
   // wall_min_offset_sigma_m, wall_max_join_gap_m.

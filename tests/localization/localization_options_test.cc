@@ -64,6 +64,24 @@ TEST(LocalizationOptionsTest, LoadsEveryKey) {
   EXPECT_DOUBLE_EQ(position.max_join_gap_m, 2.0);
 }
 
+TEST(LocalizationOptionsTest, FloorMotionLeavesTheFiltersNoScaleToLearnUnlessTold) {
+  const LocalizationOptions wheels = loadSectionText("localization", "", loadLocalizationOptions);
+  EXPECT_DOUBLE_EQ(wheels.walls.turn_scale_sigma, WallHeadingOptions().turn_scale_sigma);
+  EXPECT_DOUBLE_EQ(wheels.wall_position.distance_scale_sigma, WallPositionOptions().distance_scale_sigma);
+  EXPECT_GT(wheels.walls.turn_scale_sigma, 0.0);
+  EXPECT_GT(wheels.wall_position.distance_scale_sigma, 0.0);
+
+  const LocalizationOptions floor = loadSectionText("localization", "floor_motion = true\n", loadLocalizationOptions);
+  EXPECT_EQ(floor.walls.turn_scale_sigma, 0.0);
+  EXPECT_EQ(floor.wall_position.distance_scale_sigma, 0.0);
+
+  const LocalizationOptions told = loadSectionText(
+      "localization", "floor_motion = true\nturn_scale_sigma = 0.01\ndistance_scale_sigma = 0.02\n",
+      loadLocalizationOptions);
+  EXPECT_DOUBLE_EQ(told.walls.turn_scale_sigma, 0.01);
+  EXPECT_DOUBLE_EQ(told.wall_position.distance_scale_sigma, 0.02);
+}
+
 TEST(LocalizationOptionsTest, RejectsBadValuesAndUnknownKeys) {
   for (const char* body : {"outlier_probability = 1\n", "step_m = 0\n", "min_matched_points = 0\n",
                            "wall_min_points = 2\n", "wall_max_correction_deg = 45\n",
