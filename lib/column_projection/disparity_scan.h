@@ -37,10 +37,17 @@ struct DisparityScan {
   // the walls where they lie. Empty otherwise.
   std::vector<float> column_surface;
   std::vector<int> column_surface_row;
+  // The largest disparity the matcher searched (kInvalidDisparity when not known). A surface
+  // nearer than the search range matches best at its top, so a column read there saw something
+  // at least that near, but not where: its depth is a bound, not a measurement.
+  float range_top = kInvalidDisparity;
 
   int columns() const { return static_cast<int>(column_disparity.size()); }
   bool valid(int column) const { return isValidDisparity(column_disparity[column]); }
   bool blind(int column) const { return !column_blind.empty() && column_blind[column] != 0; }
+  bool atRangeTop(int column) const {
+    return isValidDisparity(range_top) && valid(column) && column_disparity[column] >= range_top;
+  }
   bool endsClear(int column) const {
     return column_clear_end.size() == column_disparity.size() &&
            column_clear_end_row.size() == column_clear_end.size() &&

@@ -24,7 +24,8 @@ size_t countValid(const cv::Mat1f& disparity) {
 DisparityScanner::DisparityScanner(const CameraRig& rig, const StereoOptions& stereo,
                                    const SpikeRemovalOptions& spike_removal,
                                    const ProjectionOptions& projection)
-    : rig_(rig), matcher_(stereo), spike_filter_(spike_removal), projector_(rig, projection) {
+    : rig_(rig), matcher_(stereo), spike_filter_(spike_removal), projector_(rig, projection),
+      range_top_(static_cast<float>(stereo.max_disparity)) {
   grey_buffers_.resize(rig_.secondaries.size() + 1);
   stereo_frame_.secondaries.resize(rig_.secondaries.size());
   for (size_t i = 0; i < rig_.secondaries.size(); ++i) {
@@ -72,6 +73,7 @@ const DisparityScan& DisparityScanner::scan(const RigFrame& frame, StageTimes& t
   {
     ScopedStageTimer timer(times, PipelineStage::kProjection);
     scan_ = projector_.project(disparity_);
+    scan_.range_top = range_top_;
   }
   kept_pixels_ = countValid(disparity_);
   matched_pixels_ = kept_pixels_ + static_cast<size_t>(cv::countNonZero(rejected_));

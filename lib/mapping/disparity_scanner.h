@@ -49,6 +49,7 @@ class DisparityScanner {
   StereoMatcher matcher_;
   SpikeFilter spike_filter_;
   ColumnProjector projector_;
+  float range_top_;
   std::vector<cv::Mat1b> grey_buffers_;  // camera 0 = reference, k = secondary k-1
   StereoFrame stereo_frame_;
   cv::Mat1f disparity_;

@@ -9,8 +9,9 @@ IMPLEMENTS_SERIALIZABLE(CObservationDisparityScan, CObservation, stereonav)
 namespace stereonav {
 
 // Version 1 adds the principal point's row cy, which places a tilted head's readings by their row;
-// version 2 the floor ends that stop CLEAR (DisparityScan::column_clear_end).
-uint8_t CObservationDisparityScan::serializeGetVersion() const { return 2; }
+// version 2 the floor ends that stop CLEAR (DisparityScan::column_clear_end); version 3 the
+// matcher's range top (DisparityScan::range_top).
+uint8_t CObservationDisparityScan::serializeGetVersion() const { return 3; }
 
 void CObservationDisparityScan::serializeTo(mrpt::serialization::CArchive& out) const {
   out << timestamp << sensorLabel;
@@ -22,6 +23,7 @@ void CObservationDisparityScan::serializeTo(mrpt::serialization::CArchive& out) 
   out.WriteAs<uint32_t>(scan.column_clear_end.size());
   out.WriteBufferFixEndianness(scan.column_clear_end.data(), scan.column_clear_end.size());
   for (const int row : scan.column_clear_end_row) out.WriteAs<int32_t>(row);
+  out << scan.range_top;
 }
 
 void CObservationDisparityScan::serializeFrom(mrpt::serialization::CArchive& in,
@@ -29,7 +31,8 @@ void CObservationDisparityScan::serializeFrom(mrpt::serialization::CArchive& in,
   switch (version) {
     case 0:
     case 1:
-    case 2: {
+    case 2:
+    case 3: {
       in >> timestamp >> sensorLabel;
       in >> camera.focal_px >> camera.cx;
       if (version >= 1) in >> camera.cy;
@@ -48,6 +51,8 @@ void CObservationDisparityScan::serializeFrom(mrpt::serialization::CArchive& in,
         scan.column_clear_end_row.resize(scan.column_clear_end.size());
         for (int& row : scan.column_clear_end_row) row = in.ReadAs<int32_t>();
       }
+      scan.range_top = kInvalidDisparity;
+      if (version >= 3) in >> scan.range_top;
       break;
     }
     default:

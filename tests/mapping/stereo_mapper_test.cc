@@ -85,6 +85,38 @@ TEST(StereoMapperTest, DrivingTowardsTheWallKeepsItWhereItIs) {
   expectWallMapped(mapper.map(), kWallX, 0.35);
 }
 
+TEST(StereoMapperTest, AWallNearerThanTheDisparityRangeClearsNothingBehindItsFace) {
+  // f B = 16 px m: a wall 0.4 m ahead has disparity 40, beyond the matcher's range of 0-31
+  // (nearest depth 16 / 31 = 0.52 m). Matched, it reads at the range's top, as if 0.52 m away,
+  // and its CLEAR would run up to 16 / 31.5 = 0.51 m, through the wall's face. The frames are
+  // identical renders, so a cell whose centre lies in a column's wedge is updated by that
+  // column's reading alone, six times.
+  constexpr double kNearWallX = 0.4;
+  const SyntheticScene scene({Wall{kNearWallX, -3.0, kNearWallX, 3.0}});
+  const CameraRig rig = testing::testRig();
+  StereoMapper mapper(optionsFor(GridModel::kLinear), rig);
+  for (int i = 0; i < 6; ++i) mapper.process(scene.renderFrame(rig, {}, mrpt::Clock::fromDouble(i)), {});
+  const DisparityScan& scan = mapper.scanner().lastScan();
+  const auto& stereo = dynamic_cast<const CStereoOccupancyGridMap&>(mapper.map());
+  const DisparityTaggedGrid& grid = stereo.grid();
+  int checked = 0;
+  for (double y = -0.35; y <= 0.35; y += 0.05) {
+    int col = 0, row = 0;
+    ASSERT_TRUE(grid.cellAt(kNearWallX + 0.05, y, col, row));
+    // The cell centre behind the face, and the image column whose wedge holds it (the camera is
+    // at the robot's centre, looking along +x; image right is -y).
+    const double centre_x = grid.minX() + (col + 0.5) * grid.resolution();
+    const double centre_y = grid.minY() + (row + 0.5) * grid.resolution();
+    // Between the face and the reach of a range-top CLEAR.
+    if (centre_x <= kNearWallX || centre_x >= 16.0 / 31.5) continue;
+    const int column = static_cast<int>(std::lround(rig.reference.cx - rig.reference.focal_px * centre_y / centre_x));
+    if (column < 0 || column >= scan.columns() || !scan.atRangeTop(column)) continue;
+    ++checked;
+    EXPECT_GE(grid.occupancy(col, row), 128) << "cell centred at (" << centre_x << ", " << centre_y << ")";
+  }
+  EXPECT_GE(checked, 3) << "cells behind the face seen through columns read at the range's top";
+}
+
 TEST(StereoMapperTest, TurnedRobotMapsTheWallInTheWorldFrame) {
   // The wall now runs along y = 2 and the robot looks along +y: the map must rotate the scan.
   const SyntheticScene scene({Wall{-3.0, 2.0, 3.0, 2.0}});

@@ -26,6 +26,7 @@ TEST(CObservationDisparityScanTest, SerialisesAndComesBackAsAnObservation) {
   original.scan.column_row = {17, -1, 40};
   original.scan.column_clear_end = {6.5f, kInvalidDisparity, kInvalidDisparity};
   original.scan.column_clear_end_row = {90, -1, -1};
+  original.scan.range_top = 47.0f;
   original.camera.focal_px = 190.0;
   original.camera.cx = 80.25;
   original.camera.cy = 61.75;
@@ -45,6 +46,7 @@ TEST(CObservationDisparityScanTest, SerialisesAndComesBackAsAnObservation) {
   EXPECT_EQ(copy->scan.column_row, original.scan.column_row);
   EXPECT_EQ(copy->scan.column_clear_end, original.scan.column_clear_end);
   EXPECT_EQ(copy->scan.column_clear_end_row, original.scan.column_clear_end_row);
+  EXPECT_EQ(copy->scan.range_top, 47.0f);
   EXPECT_EQ(copy->camera.focal_px, 190.0);
   EXPECT_EQ(copy->camera.cx, 80.25);
   EXPECT_EQ(copy->camera.cy, 61.75);

@@ -149,6 +149,38 @@ TEST(StereoSensorModelTest, AClearEndStopsClearButNotOcc) {
   EXPECT_EQ(full.occupied.count(cellAt(4, 0)), 1u);
 }
 
+TEST(StereoSensorModelTest, AReadingAtTheMatchersRangeTopUpdatesNothing) {
+  // f = 1, cx = 0, fB = 4, a level head: columns 0 and 1 span -1.5 x <= y <= 0.5 x. d = 1.5 in
+  // both gives CLEAR for x in [0, Z(2) = 2) and OCC for x in [2, Z(1) = 4): the cell centred at
+  // (1, 0) is CLEAR, the one at (3, 0) OCC. With the matcher's range top at 1.5 the surface may
+  // lie anywhere nearer than Z(1.5), so neither region is where it is: no reading, no cell. A
+  // range top above the readings (2) changes nothing; column 1 read at it is dropped alone.
+  const DisparityScanCamera cam = camera(1.0, 0.0, 4.0);
+  DisparityScan scan = scanOf({1.5f, 1.5f});
+  const StereoSensorModel model{SensorModelOptions{}};
+  const RasterCells measured = rasterCells(model, cam, scan, mrpt::poses::CPose2D());
+  EXPECT_EQ(measured.clear.count(cellAt(1, 0)), 1u);
+  EXPECT_EQ(measured.occupied.count(cellAt(3, 0)), 1u);
+
+  scan.range_top = 1.5f;
+  std::vector<ColumnReading> readings;
+  model.readings(scan, cam, readings);
+  EXPECT_TRUE(readings.empty());
+  const RasterCells bounded = rasterCells(model, cam, scan, mrpt::poses::CPose2D());
+  EXPECT_TRUE(bounded.clear.empty());
+  EXPECT_TRUE(bounded.occupied.empty());
+
+  scan.range_top = 2.0f;
+  const RasterCells below_top = rasterCells(model, cam, scan, mrpt::poses::CPose2D());
+  EXPECT_EQ(below_top.clear, measured.clear);
+  EXPECT_EQ(below_top.occupied, measured.occupied);
+
+  scan.column_disparity = {1.0f, 2.0f};
+  model.readings(scan, cam, readings);
+  ASSERT_EQ(readings.size(), 1u);
+  EXPECT_EQ(readings[0].column, 0);
+}
+
 TEST(StereoSensorModelTest, CellsOnRegionBoundariesFollowTheHalfOpenRule) {
   // One column, f = 1, cx = 0: the lines of sight are y = +x/2 (image left) and y = -x/2.
   // fB = 4 and d = 1.5: near depth 4/2 = 2, far depth 4/1 = 4. The camera is at the origin
