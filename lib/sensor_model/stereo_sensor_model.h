@@ -137,12 +137,12 @@ class StereoSensorModel {
 
   const SensorModelOptions& options() const { return options_; }
 
-  // The readings of a scan: one per column with a valid disparity (d >= 0), plus, when
+  // The readings of a scan: one per column with a valid disparity (d >= 0) below the matcher's
+  // range top (DisparityScan::atRangeTop: a bound, not a depth), plus, when
   // clear_invalid_columns_to_m > 0, a CLEAR-only reading per invalid column; with the shared
   // edge rays described above. A column without a row (scan.column_row empty or -1, e.g. a scan
   // not made by ColumnProjector) and a CLEAR-only reading count as seen in the optical axis' row
-  // cy. A column whose scan ends its CLEAR (DisparityScan::endsClear) gets clear_end_m there; one
-  // read at the matcher's range top (DisparityScan::atRangeTop) gets no CLEAR.
+  // cy. A column whose scan ends its CLEAR (DisparityScan::endsClear) gets clear_end_m there.
   // Reuses `readings`.
   void readings(const DisparityScan& scan, const DisparityScanCamera& camera,
                 std::vector<ColumnReading>& readings) const;
