@@ -11,6 +11,7 @@
 
 #include "closed_loop/navigation_trace.h"
 #include "closed_loop/simulated_robot_interface.h"
+#include "column_projection/range_top_points.h"
 #include "common/atomic_file.h"
 #include "common/image_file.h"
 #include "evaluation/trajectory_error.h"
@@ -119,6 +120,9 @@ class ClosedLoopMapper {
     const DisparityScan& scan = mapper_.disparityScan().scan;
     robot_interface_.setSensedScan(scan, config_.simulator.rig, config_.explorer.robot_radius_m, kSensedRangeM,
                                    rig_frame.timestamp, map_pose);
+    std::vector<mrpt::math::TPoint2D> range_top = rangeTopPoints(scan, config_.simulator.rig);
+    for (mrpt::math::TPoint2D& point : range_top) map_pose.composePoint(mrpt::math::TPoint2D(point), point);
+    explorer_.rememberObstacles(range_top);
     explorer_.updateMap(grid(), map_pose);
     return map_pose;
   }

@@ -68,6 +68,10 @@ void FrontierExplorer::updateMap(const DisparityTaggedGrid& grid, const mrpt::po
   replan();
 }
 
+void FrontierExplorer::rememberObstacles(const std::vector<mrpt::math::TPoint2D>& points) {
+  guard_.nearObstacles().remember(points);
+}
+
 void FrontierExplorer::replan() {
   frontiers_ = frontier_memory_.withoutDropped(*grid_, map_frontiers_);
   CostToGoOptions planner = planner_options_;

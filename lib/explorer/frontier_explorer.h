@@ -48,6 +48,11 @@ class FrontierExplorer {
 
   // The newest map, built in the robot's pose frame, and the pose it was last updated at.
   void updateMap(const DisparityTaggedGrid& grid, const mrpt::poses::CPose2D& pose);
+  // Obstacle points (map frame) that the map cannot hold, kept as near obstacles
+  // (near_obstacle_memory.h) until a later view sees past them: what the stereo head saw nearer
+  // than its disparity range (range_top_points.h), which the sensor model leaves out of the map.
+  // Given before the map of the same frame, the next plan goes round them.
+  void rememberObstacles(const std::vector<mrpt::math::TPoint2D>& points);
 
   // One control cycle: reads the robot and commands it. False once exploration has finished
   // (the robot has been told to stop); stopReason() says why.

@@ -445,5 +445,28 @@ TEST(FrontierExplorerTest, HeldByWhatItSeesAheadItDoesNotReverseIntoAWallBehind)
   EXPECT_GT(westmost - testOptions().robot_radius_m, 0.1) << westmost;
 }
 
+TEST(FrontierExplorerTest, KeepsClearOfAnObstacleItWasToldOfAfterTheSensorHasLostIt) {
+  // The map shows the way east clear, the sensor shows nothing, and the robot was told once of a
+  // 0.4 m wide post across the way at x = 2.5 that the map cannot hold (seen nearer than the
+  // disparity range): it goes round the post all the same.
+  const TestGrid cells = openToTheEast();
+  FrontierExplorer explorer(testOptions());
+  KinematicRobot robot({1.0, 2.0, 0.0});
+  std::vector<mrpt::math::TPoint2D> post;
+  for (double y = 1.8; y <= 2.2 + 1e-9; y += 0.05) post.emplace_back(2.5, y);
+  explorer.rememberObstacles(post);
+  double closest = 1e9;
+  for (int i = 0; i < 1200 && robot.pose_.x < 3.0; ++i) {
+    if (i % 4 == 0) explorer.updateMap(cells.grid(), mrpt::poses::CPose2D(robot.pose_));  // 5 Hz
+    if (!explorer.controlStep(robot)) break;
+    robot.step(0.05);
+    for (const mrpt::math::TPoint2D& point : post) {
+      closest = std::min(closest, std::hypot(point.x - robot.pose_.x, point.y - robot.pose_.y));
+    }
+  }
+  EXPECT_GT(closest, testOptions().robot_radius_m);
+  EXPECT_GT(robot.pose_.x, 3.0) << robot.pose_.asString();
+}
+
 }  // namespace
 }  // namespace stereonav
