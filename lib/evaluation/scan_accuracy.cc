@@ -10,9 +10,8 @@ namespace {
 
 // Distance on the floor from the robot's centre to what column x reads at row y and disparity d.
 double floorRange(const CameraRig& rig, int x, int y, double disparity) {
-  const mrpt::math::TVector3D ray = rig.rayOnRobot(x, y);
-  const double depth = rig.depthForDisparity(disparity);
-  return std::hypot(rig.pose_on_robot.x() + depth * ray.x, rig.pose_on_robot.y() + depth * ray.y);
+  const mrpt::math::TPoint2D reading = rig.readingOnRobot(x, y, disparity);
+  return std::hypot(reading.x, reading.y);
 }
 
 double share(size_t part, size_t whole) { return whole == 0 ? 0.0 : static_cast<double>(part) / whole; }

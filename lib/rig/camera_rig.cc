@@ -24,6 +24,13 @@ std::optional<mrpt::math::TPoint2D> CameraRig::floorPointOnRobot(double x, doubl
   return mrpt::math::TPoint2D(sensor.x + depth * ray.x, sensor.y + depth * ray.y);
 }
 
+mrpt::math::TPoint2D CameraRig::readingOnRobot(double x, double y, double disparity) const {
+  const mrpt::math::TVector3D ray = rayOnRobot(x, y);
+  const double depth = depthForDisparity(disparity);
+  const auto sensor = pose_on_robot.translation();
+  return mrpt::math::TPoint2D(sensor.x + depth * ray.x, sensor.y + depth * ray.y);
+}
+
 mrpt::poses::CPose3D CameraRig::opticalPoseOnRobot(double x, double y, double z, double yaw,
                                                    double tilt_down) {
   // Robot frame to a forward-looking optical frame: z_cam = x_robot, x_cam = -y_robot,

@@ -61,6 +61,9 @@ struct CameraRig {
   // Where that ray meets the floor (z = 0), robot frame; nullopt if it never does (level or
   // looking up, or a camera at or below the floor).
   std::optional<mrpt::math::TPoint2D> floorPointOnRobot(double x, double y) const;
+  // Where what image point (x, y) reads at disparity d lies, robot frame, dropped onto the floor
+  // plane (x ahead, y to the left).
+  mrpt::math::TPoint2D readingOnRobot(double x, double y, double disparity) const;
 
   // The optical-frame pose of a camera mounted at (x, y, z) on the robot, turned left by `yaw`
   // and pitched down by `tilt_down` (radians), as a person measures it on the robot.
