@@ -51,19 +51,29 @@ Eigen::Vector2d WallPositionFilter::update(const Eigen::Vector2d& displacement, 
     }
     if (std::abs(snap) > max_direction_rad_) continue;
     const double normal = mrpt::math::wrapToPi(seen - snap);
-    const double variance = mrpt::square(std::max(segment.offset_sigma_m, options_.min_offset_sigma_m));
+    // The wall's direction is known, so its offset is the centroid's distance along the known
+    // normal, not the fitted line's at the foot of its own normal: that one carries the fit's
+    // tilt over the lever from the centroid to the robot (office seed 2: a cabinet's end and a
+    // door jamb fitted as one line 5 degrees askew read 0.1 m off). The heading's error moves
+    // the centroid's distance by the lever too.
+    const Eigen::Vector2d centroid(segment.centroid.x, segment.centroid.y);
+    const double normal_on_robot = normal - heading.heading;
+    const double offset_m = unit(normal_on_robot).dot(centroid);
+    const double lever_m = along(normal_on_robot).dot(centroid);
+    const double variance = mrpt::square(std::max(segment.centroid_sigma_m, options_.min_offset_sigma_m)) +
+                            mrpt::square(lever_m) * heading.variance;
     // The stretch's ends along the line, from the position as corrected by the frame so far.
     const Eigen::Vector2d robot = position();
     const Eigen::Vector2d t = along(normal);
     const double a = t.dot(robot + turn * Eigen::Vector2d(segment.first.x, segment.first.y));
     const double b = t.dot(robot + turn * Eigen::Vector2d(segment.last.x, segment.last.y));
-    const size_t wall = associate(normal, segment.offset_m, variance, std::min(a, b), std::max(a, b));
+    const size_t wall = associate(normal, offset_m, variance, std::min(a, b), std::max(a, b));
     if (wall == walls_.size()) {
-      addWall(normal, segment.offset_m, variance, std::min(a, b), std::max(a, b));
+      addWall(normal, offset_m, variance, std::min(a, b), std::max(a, b));
       continue;
     }
     turnWall(wall, normal);
-    correct(innovation(wall, segment.offset_m, variance));
+    correct(innovation(wall, offset_m, variance));
     // The stretch as seen from the corrected position.
     const Eigen::Vector2d shift = position() - robot;
     walls_[wall].along_min = std::min(walls_[wall].along_min, std::min(a, b) + t.dot(shift));

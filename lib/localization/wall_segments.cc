@@ -1,7 +1,5 @@
 #include "localization/wall_segments.h"
 
-#include <mrpt/core/bits_math.h>
-
 #include <algorithm>
 #include <cmath>
 
@@ -58,21 +56,15 @@ WallSegment fitLine(const std::vector<Point>& points, size_t begin, size_t end, 
   // The slope's standard error: residual variance over the spread along the line.
   segment.sigma_rad = along_sq > 0.0 ? std::sqrt(residual_variance / along_sq) : M_PI;
   segment.length_m = along_max - along_min;
-  // The normal through the robot: the centroid's component across the line, signed toward it.
-  double across_robot = -s * mx + c * my;
+  // The normal toward the line, signed so that the centroid lies ahead along it.
   double nx = -s, ny = c;
-  if (across_robot < 0.0) {
-    across_robot = -across_robot;
+  if (nx * mx + ny * my < 0.0) {
     nx = -nx;
     ny = -ny;
   }
   segment.normal_rad = std::atan2(ny, nx);
-  segment.offset_m = across_robot;
-  // The centroid's own error, plus the slope's error over the lever from the centroid to the
-  // foot of the normal through the robot.
-  const double lever = c * mx + s * my;
-  segment.offset_sigma_m =
-      std::sqrt(residual_variance / n + mrpt::square(lever * std::min(segment.sigma_rad, 1.0)));
+  segment.centroid = mrpt::math::TPoint2D(mx, my);
+  segment.centroid_sigma_m = std::sqrt(residual_variance / n);
   const auto ontoLine = [&](const Point& p) {
     const double along = c * (p.x - mx) + s * (p.y - my);
     return mrpt::math::TPoint2D(mx + along * c, my + along * s);

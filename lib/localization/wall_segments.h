@@ -31,11 +31,14 @@ struct WallSegment {
   double direction_rad = 0.0;  // of the fitted line, in [-pi/2, pi/2): a line has no sense
   double sigma_rad = 0.0;      // one sigma of direction_rad, from the fit's residuals
   double length_m = 0.0;
-  // The line's nearest point to the robot is offset_m away along normal_rad (in [-pi, pi)): the
-  // side of the wall the robot sees, and how far the wall is, whatever the robot's heading.
+  // The direction from the robot toward the line, square to it (in [-pi, pi)): the side of the
+  // wall the robot sees.
   double normal_rad = 0.0;
-  double offset_m = 0.0;
-  double offset_sigma_m = 0.0;  // one sigma of offset_m, from the fit's residuals
+  // The readings' centroid, and one sigma of where it lies across the line: with the wall's
+  // direction known from elsewhere, the centroid alone says how far the wall is (a fitted line's
+  // tilt, carried to the foot of its normal through the robot, would not).
+  mrpt::math::TPoint2D centroid;
+  double centroid_sigma_m = 0.0;
   // The stretch's ends, its first and last readings put onto the line.
   mrpt::math::TPoint2D first;
   mrpt::math::TPoint2D last;

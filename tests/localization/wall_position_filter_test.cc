@@ -119,5 +119,32 @@ TEST(WallPositionFilterTest, AHeadingFoundOffMovesWhatWasDrivenOnIt) {
   EXPECT_NEAR(std::sqrt(filter.positionCovariance()(1, 1)), 5.0 * mrpt::DEG2RAD(0.1), 1e-6);
 }
 
+TEST(WallPositionFilterTest, AStretchTellsItsWallsOffsetByItsMiddleNotByItsFittedLinesTilt) {
+  // A wall along y = -1, seen straight from the origin (x = 1 .. 2.3 in view: 45 degrees to each
+  // side, 2.5 m); the robot then drives exactly 1 m along x (the filter allows 3 cm) and sees
+  // x = 2 .. 3.3 of it read 1 degree askew about its middle (2.65, -1), as a fit of noisy readings
+  // may be. The wall's direction is known: the stretch's middle says the wall is 1 m away. The
+  // fitted line, carried 1.65 m back to the foot of its normal through the robot, would say
+  // 1 + 1.65 tan 1 deg = 1.029 m, and pull the position more than a centimetre.
+  const std::vector<double> directions = {0.0};
+  const WallSegmentOptions segments;
+  const HeadingEstimate heading{0.0, mrpt::square(mrpt::DEG2RAD(0.1))};
+  WallPositionFilter filter(WallPositionOptions{}, WallHeadingOptions{}, Eigen::Vector2d::Zero());
+  filter.update({0.0, 0.0}, 0.0, heading, heading, directions,
+                wallSegments(testing::scanOf({{0.0, -1.0, 3.0, -1.0}}, mrpt::poses::CPose2D(0.0, 0.0, 0.0)), segments));
+  ASSERT_EQ(filter.wallCount(), 1u);
+  const double rise = 0.65 * std::tan(mrpt::DEG2RAD(1.0));
+  const Eigen::Vector2d position = filter.update(
+      {1.0, 0.0}, 0.0, heading, heading, directions,
+      wallSegments(testing::scanOf({{2.0, -1.0 - rise, 3.3, -1.0 + rise}}, mrpt::poses::CPose2D(1.0, 0.0, 0.0)),
+                   segments));
+  EXPECT_EQ(filter.lastFrameCorrections(), 1);
+  EXPECT_EQ(filter.wallCount(), 1u);
+  EXPECT_NEAR(position.x(), 1.0, 1e-9);
+  // The readings crowd towards the near end, which lies a centimetre farther: their centroid is
+  // a few millimetres beyond the middle's 1 m.
+  EXPECT_NEAR(position.y(), 0.0, 0.004);
+}
+
 }  // namespace
 }  // namespace stereonav

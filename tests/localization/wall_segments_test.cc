@@ -29,10 +29,12 @@ TEST(WallSegmentsTest, AWallAheadIsOneSegmentAcrossTheRobotsHeading) {
   // deg) = -0.70 on, up to where it leaves max_range_m (2.5 m): y = sqrt(2.5^2 - 1.5^2) = 2.
   EXPECT_NEAR(segments[0].length_m, 2.7, 0.05);
   EXPECT_LT(segments[0].sigma_rad, mrpt::DEG2RAD(0.1));
-  // The wall's nearest point is 1.5 m along world +x: -20 degrees in the robot's frame.
-  EXPECT_NEAR(segments[0].offset_m, 1.5, 0.005);
+  // The wall lies 1.5 m along world +x: -20 degrees in the robot's frame. The readings' centroid
+  // is on it, 1.5 m along that normal.
   EXPECT_NEAR(segments[0].normal_rad, mrpt::DEG2RAD(-20.0), mrpt::DEG2RAD(0.1));
-  EXPECT_LT(segments[0].offset_sigma_m, 0.005);
+  const double normal = segments[0].normal_rad;
+  EXPECT_NEAR(std::cos(normal) * segments[0].centroid.x + std::sin(normal) * segments[0].centroid.y, 1.5, 0.005);
+  EXPECT_LT(segments[0].centroid_sigma_m, 0.005);
   // Its ends, back in the world, lie on the wall at y = -0.70 and y = 2.
   const mrpt::poses::CPose2D first = robot + mrpt::poses::CPose2D(segments[0].first.x, segments[0].first.y, 0.0);
   const mrpt::poses::CPose2D last = robot + mrpt::poses::CPose2D(segments[0].last.x, segments[0].last.y, 0.0);
@@ -56,7 +58,7 @@ TEST(WallSegmentsTest, ReadingsThatShareTheirErrorsGiveWiderSigmas) {
   ASSERT_EQ(shared.size(), 1u);
   EXPECT_NEAR(shared[0].direction_rad, independent[0].direction_rad, 1e-12);
   EXPECT_NEAR(shared[0].sigma_rad, 3.0 * independent[0].sigma_rad, 1e-9);
-  EXPECT_NEAR(shared[0].offset_sigma_m, 3.0 * independent[0].offset_sigma_m, 1e-6);
+  EXPECT_NEAR(shared[0].centroid_sigma_m, 3.0 * independent[0].centroid_sigma_m, 1e-9);
 }
 
 TEST(WallSegmentsTest, ACornerSplitsIntoItsTwoWalls) {
