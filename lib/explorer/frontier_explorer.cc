@@ -212,6 +212,21 @@ VelocityCommand FrontierExplorer::decide(const mrpt::poses::CPose2D& pose, doubl
     best_cost_time_ = time_s;
     return {};
   }
+  // That watch starts afresh with each new target, so a target flipping between two frontiers
+  // (one that vanishes when faced and comes back when the robot turns away) kept a robot turning
+  // on one spot until the time ran out (session 89). Steering without leaving the spot counts
+  // whatever the target; any other phase in between (a look, an escape, a back-off) restarts it.
+  const bool steered_last_cycle = time_s - last_steering_s_ <= kSteeringGapS;
+  last_steering_s_ = time_s;
+  if (!steered_last_cycle || std::hypot(pose.x() - spot_x_, pose.y() - spot_y_) > options_.progress_m) {
+    spot_x_ = pose.x();
+    spot_y_ = pose.y();
+    spot_since_s_ = time_s;
+  } else if (time_s - spot_since_s_ > options_.stuck_timeout_s) {
+    dropFrontier(static_cast<size_t>(field_->label(col, row)), pose, true);
+    spot_since_s_ = time_s;
+    return {};
+  }
   const MotionController::Drive drive =
       motion_.drive(pose, path, *grid_, status_.phase == ExplorerPhase::kDriving);
   status_.phase = drive.driving ? ExplorerPhase::kDriving : ExplorerPhase::kTurning;

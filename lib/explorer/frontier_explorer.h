@@ -124,6 +124,13 @@ class FrontierExplorer {
   // Progress watch: the lowest cost-to-go reached and when.
   double best_cost_ = 0.0;
   double best_cost_time_ = 0.0;
+  // Spot watch: where the robot has been steering (driving or turning towards a target) since
+  // when, and the last cycle it steered. A gap longer than kSteeringGapS means another phase ran.
+  static constexpr double kSteeringGapS = 0.5;
+  double spot_x_ = 0.0;
+  double spot_y_ = 0.0;
+  double spot_since_s_ = 0.0;
+  double last_steering_s_ = -std::numeric_limits<double>::infinity();
   double phase_start_time_ = 0.0;
   std::optional<cv::Point2d> escape_to_;
   // Escape targets the robot was blocked on the way to, since it last stood where its body fits.

@@ -468,5 +468,43 @@ TEST(FrontierExplorerTest, KeepsClearOfAnObstacleItWasToldOfAfterTheSensorHasLos
   EXPECT_GT(robot.pose_.x, 3.0) << robot.pose_.asString();
 }
 
+// A 7.8 m x 2.6 m room with a doorway at each end (unknown beyond): the east one 1.4 m from the
+// robot, the west one 6.4 m. `east_closed` maps the east doorway as wall, as far readings paint
+// one the robot faces in some worlds.
+TestGrid roomWithTwoDoorways(bool east_closed) {
+  TestGrid cells(120, 40);
+  cells.occupied(10, 5, 89, 32).free(11, 6, 88, 31).unknown(10, 15, 10, 22);
+  if (east_closed) return cells;
+  cells.unknown(89, 15, 89, 22);
+  return cells;
+}
+
+TEST(FrontierExplorerTest, LeavesASpotWhereItsTargetFlipsBetweenAFrontierThatVanishesWhenFacedAndAnother) {
+  // The east doorway is a frontier only while the robot faces away from it, so the target flips
+  // between it and the west doorway whenever the robot turns, and each flip is a new target
+  // whose progress watch starts afresh. Held to no target, the spot watch gives up the one it is
+  // steering for after stuck_timeout_s on the spot; the robot then drives west.
+  const TestGrid open = roomWithTwoDoorways(false);
+  const TestGrid closed = roomWithTwoDoorways(true);
+  const ExplorerOptions options = testOptions();
+  FrontierExplorer explorer(options);
+  KinematicRobot robot({7.5, 1.9, M_PI});
+  double westmost = robot.pose_.x;
+  double turned_on_the_spot_s = 0.0;
+  for (int i = 0; i < 1600 && westmost > 5.5; ++i) {  // 80 s
+    if (i % 4 == 0) {
+      const bool faces_east = std::abs(robot.pose_.phi) < M_PI / 4.0;
+      explorer.updateMap((faces_east ? closed : open).grid(), mrpt::poses::CPose2D(robot.pose_));
+    }
+    if (!explorer.controlStep(robot)) break;
+    if (robot.speed_ == 0.0 && robot.turn_rate_ != 0.0) turned_on_the_spot_s += 0.05;
+    robot.step(0.05);
+    westmost = std::min(westmost, robot.pose_.x);
+  }
+  EXPECT_LT(westmost, 5.5) << explorer.stopReason();
+  // It turned back and forth for the watch's time first: the flip is real in this map.
+  EXPECT_GT(turned_on_the_spot_s, options.stuck_timeout_s);
+}
+
 }  // namespace
 }  // namespace stereonav
