@@ -469,8 +469,8 @@ TEST(FrontierExplorerTest, KeepsClearOfAnObstacleItWasToldOfAfterTheSensorHasLos
 }
 
 // A 7.8 m x 2.6 m room with a doorway at each end (unknown beyond): the east one 1.4 m from the
-// robot, the west one 6.4 m. `east_closed` maps the east doorway as wall, as far readings paint
-// one the robot faces in some worlds.
+// robot, the west one 6.4 m. `east_closed` maps the east doorway as wall: a frontier that vanishes
+// whenever the robot faces it, as one did in the exploration benchmark's world 20 (session 89).
 TestGrid roomWithTwoDoorways(bool east_closed) {
   TestGrid cells(120, 40);
   cells.occupied(10, 5, 89, 32).free(11, 6, 88, 31).unknown(10, 15, 10, 22);
@@ -482,8 +482,8 @@ TestGrid roomWithTwoDoorways(bool east_closed) {
 TEST(FrontierExplorerTest, LeavesASpotWhereItsTargetFlipsBetweenAFrontierThatVanishesWhenFacedAndAnother) {
   // The east doorway is a frontier only while the robot faces away from it, so the target flips
   // between it and the west doorway whenever the robot turns, and each flip is a new target
-  // whose progress watch starts afresh. Held to no target, the spot watch gives up the one it is
-  // steering for after stuck_timeout_s on the spot; the robot then drives west.
+  // whose progress watch starts afresh. The spot watch, which a new target does not restart,
+  // gives up the one the robot steers for after stuck_timeout_s on the spot; it then drives west.
   const TestGrid open = roomWithTwoDoorways(false);
   const TestGrid closed = roomWithTwoDoorways(true);
   const ExplorerOptions options = testOptions();
