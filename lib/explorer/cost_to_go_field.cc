@@ -28,8 +28,6 @@ CostToGoField::CostToGoField(const NavigationGrid& grid, const CostToGoOptions& 
   }
 }
 
-namespace {
-
 // The open cells of the wavefront, lowest (cost, index) first: the cell index breaks ties as
 // std::pair orders them, so cells leave in exactly the order a priority queue of pairs gives.
 // Costs leave in rising order and every step adds at least `min_step`, so the cells wait in
@@ -38,7 +36,7 @@ namespace {
 // once and read in order. A cell whose cost is lowered leaves its old entry behind, skipped as
 // stale (its cost is no longer the cell's). The goals' seeds, at any cost, wait in a sorted list
 // and join when their bucket comes up.
-class OpenCells {
+class CostToGoField::OpenCells {
  public:
   OpenCells(double min_step, double max_step)
       : bucket_width_(0.5 * min_step), ring_(static_cast<size_t>(std::ceil(max_step / bucket_width_)) + 2) {}
@@ -109,7 +107,7 @@ class OpenCells {
   size_t next_ = 0;
 };
 
-}  // namespace
+CostToGoField::~CostToGoField() = default;
 
 void CostToGoField::compute(const std::vector<GoalCell>& goals) {
   const int width = box_.width, height = box_.height;
@@ -119,34 +117,53 @@ void CostToGoField::compute(const std::vector<GoalCell>& goals) {
   parent_.setTo(-1);
   label_.create(height, width);
   label_.setTo(-1);
-  // The maps are continuous (created whole), so a cell's index in the box addresses each of them.
-  // Cells are ordered by index as by (row, col), in the box as in the grid.
-  double* const cost = cost_[0];
-  int* const parent = parent_[0];
-  int* const label = label_[0];
-  const uint8_t* const traversable = traversable_[0];
-  const float* const weight = step_weight_[0];
-  // Steps cost a cell's length (diagonal: sqrt(2) times) times the mean weight of its two cells.
+  settled_.create(height, width);
+  settled_.setTo(0);
+  // The cheapest step is a straight one between the lightest cells, the dearest a diagonal one
+  // between the heaviest (settledIndex).
   const double resolution = grid_.resolution();
-  const double lengths[2] = {resolution, M_SQRT2 * resolution};
-  OpenCells open(lengths[0] * min_weight_, lengths[1] * max_weight_);
+  open_ = std::make_unique<OpenCells>(resolution * min_weight_, M_SQRT2 * resolution * max_weight_);
+  double* const cost = cost_[0];
   for (const GoalCell& goal : goals) {
     if (!this->traversable(goal.col, goal.row)) continue;
     const int index = (goal.row - box_.y) * width + goal.col - box_.x;
     if (goal.seed_cost >= cost[index]) continue;
     cost[index] = goal.seed_cost;
-    parent[index] = index;
-    label[index] = goal.label;
-    open.seed(index, goal.seed_cost);
+    parent_[0][index] = index;
+    label_[0][index] = goal.label;
+    open_->seed(index, goal.seed_cost);
   }
-  for (int index = open.pop(cost); index >= 0; index = open.pop(cost)) {
-    const int row = index / width, col = index % width;
+}
+
+int CostToGoField::settledIndex(int col, int row) const {
+  const int width = box_.width;
+  const int wanted = (row - box_.y) * width + col - box_.x;
+  if (!open_) return wanted;
+  // The maps are continuous (created whole), so a cell's index in the box addresses each of them.
+  // Cells are ordered by index as by (row, col), in the box as in the grid.
+  double* const cost = cost_[0];
+  int* const parent = parent_[0];
+  int* const label = label_[0];
+  uint8_t* const settled = settled_[0];
+  const uint8_t* const traversable = traversable_[0];
+  const float* const weight = step_weight_[0];
+  // Steps cost a cell's length (diagonal: sqrt(2) times) times the mean weight of its two cells.
+  const double resolution = grid_.resolution();
+  const double lengths[2] = {resolution, M_SQRT2 * resolution};
+  while (!settled[wanted]) {
+    const int index = open_->pop(cost);
+    if (index < 0) {
+      open_.reset();  // every reachable cell is settled
+      break;
+    }
+    settled[index] = 1;
+    const int cell_row = index / width, cell_col = index % width;
     const double here = cost[index];
     for (int dr = -1; dr <= 1; ++dr) {
-      const int r = row + dr;
-      if (r < 0 || r >= height) continue;
+      const int r = cell_row + dr;
+      if (r < 0 || r >= box_.height) continue;
       for (int dc = -1; dc <= 1; ++dc) {
-        const int c = col + dc;
+        const int c = cell_col + dc;
         if ((dr == 0 && dc == 0) || c < 0 || c >= width) continue;
         const int next_index = r * width + c;
         if (!traversable[next_index]) continue;
@@ -158,11 +175,12 @@ void CostToGoField::compute(const std::vector<GoalCell>& goals) {
           cost[next_index] = next;
           parent[next_index] = index;
           label[next_index] = label[index];
-          open.push(next_index, next);
+          open_->push(next_index, next);
         }
       }
     }
   }
+  return wanted;
 }
 
 std::vector<cv::Point> CostToGoField::pathFrom(int col, int row) const {

@@ -3,6 +3,7 @@
 #include <opencv2/core.hpp>
 
 #include <limits>
+#include <memory>
 #include <vector>
 
 #include "explorer/navigation_grid.h"
@@ -37,25 +38,36 @@ struct GoalCell {
 // MRPT's PlannerSimple2D is a plain wavefront without the repulsive term, and its reactive
 // navigator expects PTG configurations for a known robot shape; this is the one piece of the
 // navigation stack written here.
+//
+// The wavefront spreads only as far as the queries need: a query settles its cell first, so the
+// explorer, which asks about the cells around the robot between two maps, pays for the cells
+// cheaper than the robot's and not for the rest of the building. The cells leave the wavefront
+// in the same order whenever it pauses, so every answer is the one a whole wavefront gives.
 class CostToGoField {
  public:
   CostToGoField(const NavigationGrid& grid, const CostToGoOptions& options);
+  ~CostToGoField();
 
-  // Recomputes the field from `goals` (non-traversable goals are ignored).
+  // Starts the field afresh from `goals` (non-traversable goals are ignored).
   void compute(const std::vector<GoalCell>& goals);
 
   bool traversable(int col, int row) const { return inBox(col, row) && traversable_(row - box_.y, col - box_.x) != 0; }
-  bool reachable(int col, int row) const { return inBox(col, row) && parent_(row - box_.y, col - box_.x) >= 0; }
+  bool reachable(int col, int row) const { return inBox(col, row) && parent_[0][settledIndex(col, row)] >= 0; }
   double cost(int col, int row) const {
-    return inBox(col, row) ? cost_(row - box_.y, col - box_.x) : std::numeric_limits<double>::infinity();
+    return inBox(col, row) ? cost_[0][settledIndex(col, row)] : std::numeric_limits<double>::infinity();
   }
   // The label of the goal that the path from this cell ends at (-1 if unreachable).
-  int label(int col, int row) const { return inBox(col, row) ? label_(row - box_.y, col - box_.x) : -1; }
+  int label(int col, int row) const { return inBox(col, row) ? label_[0][settledIndex(col, row)] : -1; }
   // The cells from (col, row) to its goal, both included; empty if unreachable.
   std::vector<cv::Point> pathFrom(int col, int row) const;
 
  private:
+  class OpenCells;
+
   bool inBox(int col, int row) const { return box_.contains(cv::Point(col, row)); }
+  // The cell's index in the box (the maps are continuous), once the wavefront has settled it or
+  // found it unreachable.
+  int settledIndex(int col, int row) const;
 
   const NavigationGrid& grid_;
   // Only free cells can be traversable, so the field covers the free cells' box (the grid's
@@ -65,9 +77,12 @@ class CostToGoField {
   double max_weight_;
   cv::Mat1b traversable_;
   cv::Mat1f step_weight_;
-  cv::Mat1d cost_;
-  cv::Mat1i parent_;  // row * width + col (in the box) of the next cell towards the goal; itself at a goal
-  cv::Mat1i label_;
+  // The wavefront's state, advanced by queries (settledIndex).
+  mutable cv::Mat1d cost_;
+  mutable cv::Mat1i parent_;  // row * width + col (in the box) of the next cell towards the goal; itself at a goal
+  mutable cv::Mat1i label_;
+  mutable cv::Mat1b settled_;
+  mutable std::unique_ptr<OpenCells> open_;
 };
 
 // A path between two points through traversable cells (the wavefront from `goal`), as cell

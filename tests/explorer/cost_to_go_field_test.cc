@@ -225,6 +225,42 @@ TEST(CostToGoFieldTest, TiesBreakAsAPriorityQueueOfCostAndCellIndexBreaksThem) {
   EXPECT_GT(ties, 0);
 }
 
+TEST(CostToGoFieldTest, AnswersTheSameWhateverOrderTheCellsAreAskedIn) {
+  // The wavefront spreads only as far as the queries need. Three fields from the same goals, on
+  // a floor with a closed room (unreachable cells) and equal-cost ties: one asked cell by cell
+  // from a goal outwards (row order), one from the far corner back, one first at an unreachable
+  // cell (which spreads the wavefront over everything). Every answer must agree.
+  TestGrid cells(40, 30);
+  cells.free(0, 0, 39, 29).occupied(19, 8, 20, 21).occupied(28, 2, 36, 2).occupied(28, 10, 36, 10);
+  cells.occupied(28, 2, 28, 10).occupied(36, 2, 36, 10);  // the closed room, x 2.9-3.5, y 0.3-0.9
+  const NavigationGrid grid(cells.grid(), {}, NavigationGridOptions{});
+  const std::vector<GoalCell> goals = {GoalCell{5, 5, 0.0, 0}, GoalCell{5, 24, 0.0, 1}, GoalCell{12, 15, 0.3, 2}};
+  const cv::Rect box = grid.freeCells();
+  CostToGoField forward(grid, plainOptions(0.15)), backward(grid, plainOptions(0.15)), closed_first(grid, plainOptions(0.15));
+  for (CostToGoField* field : {&forward, &backward, &closed_first}) field->compute(goals);
+  ASSERT_TRUE(closed_first.traversable(32, 6));
+  EXPECT_FALSE(closed_first.reachable(32, 6));
+  int reachable = 0;
+  for (int i = 0; i < box.area(); ++i) {
+    const int col = box.x + i % box.width, row = box.y + i / box.width;
+    const int back_col = box.x + (box.area() - 1 - i) % box.width, back_row = box.y + (box.area() - 1 - i) / box.width;
+    backward.cost(back_col, back_row);
+    ASSERT_EQ(forward.reachable(col, row), closed_first.reachable(col, row)) << col << ", " << row;
+    EXPECT_EQ(forward.cost(col, row), closed_first.cost(col, row)) << col << ", " << row;
+    EXPECT_EQ(forward.label(col, row), closed_first.label(col, row)) << col << ", " << row;
+    EXPECT_EQ(forward.pathFrom(col, row), closed_first.pathFrom(col, row)) << col << ", " << row;
+    reachable += forward.reachable(col, row) ? 1 : 0;
+  }
+  for (int row = box.y; row < box.y + box.height; ++row) {
+    for (int col = box.x; col < box.x + box.width; ++col) {
+      EXPECT_EQ(backward.cost(col, row), forward.cost(col, row)) << col << ", " << row;
+      EXPECT_EQ(backward.label(col, row), forward.label(col, row)) << col << ", " << row;
+      EXPECT_EQ(backward.pathFrom(col, row), forward.pathFrom(col, row)) << col << ", " << row;
+    }
+  }
+  EXPECT_GT(reachable, 500);
+}
+
 TEST(CostToGoFieldTest, MatchesRelaxationToAFixedPointOnAClutteredFloorWithRepulsion) {
   // A 6 m x 5 m floor with 40 random obstacle blocks, unknown patches and three goals with
   // different seed costs. The reference knows nothing of queues: it relaxes every step until no
