@@ -51,45 +51,42 @@ OpeningRegions openingRegions(const NavigationGrid& grid) {
   return regions;
 }
 
-// What a free cell borders through its 4-neighbours: the largest area (cells) of the opening
-// regions among them (0 if none: then it is no frontier cell), and whether one of them is an
-// unknown cell rather than an obstacle seen from far.
-struct OpeningBorder {
-  int area = 0;
-  bool unknown = false;
-};
-
-OpeningBorder openingBorder(const NavigationGrid& grid, const OpeningRegions& regions, int col, int row) {
-  OpeningBorder border;
-  if (grid.cellClass(col, row) != NavigationGrid::kFree) return border;
-  static const int kNeighbours[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
-  for (const auto& offset : kNeighbours) {
-    const int c = col + offset[0], r = row + offset[1];
-    if (!grid.contains(c, r)) continue;
-    const auto label = static_cast<size_t>(regions.labels(r, c));
-    if (!regions.is_opening[label]) continue;
-    border.area = std::max(border.area, regions.areas[label]);
-    border.unknown = border.unknown || grid.cellClass(c, r) == NavigationGrid::kUnknown;
-  }
-  return border;
-}
-
 }  // namespace
 
 std::vector<Frontier> findFrontiers(const NavigationGrid& grid, int min_cells) {
   const OpeningRegions regions = openingRegions(grid);
-  // Per cell: the area it borders (0 if it is no frontier cell) and whether it faces unknown.
-  // Only free cells border anything, so only their bounding box is visited.
+  // A free cell is a frontier cell when one of its 4-neighbours belongs to an opening: per cell,
+  // the largest area (cells) of the openings among them, and whether one of them is an unknown
+  // cell rather than an obstacle seen from far. Per grid cell first, its own opening's area and
+  // whether it is unknown; then the most of these over each cell's cross of neighbours (itself
+  // resolved, so adding nothing). Only free cells border anything, so only their bounding box is
+  // taken, grown by the cells its crosses reach.
   const cv::Rect& free_cells = grid.freeCells();
-  cv::Mat1i bordered(free_cells.size(), 0);
-  cv::Mat1b faces_unknown(free_cells.size(), uint8_t{0});
-  for (int row = 0; row < free_cells.height; ++row) {
-    for (int col = 0; col < free_cells.width; ++col) {
-      const OpeningBorder border = openingBorder(grid, regions, free_cells.x + col, free_cells.y + row);
-      bordered(row, col) = border.area;
-      faces_unknown(row, col) = border.unknown;
+  if (free_cells.empty()) return {};
+  const cv::Mat1b& classes = grid.cellClasses();
+  const cv::Rect reach = (free_cells - cv::Point(1, 1) + cv::Size(2, 2)) & cv::Rect(cv::Point(), classes.size());
+  cv::Mat1f opening_area(reach.size());
+  cv::Mat1b unknown_opening(reach.size());
+  for (int row = 0; row < reach.height; ++row) {
+    const int* label_row = regions.labels[reach.y + row] + reach.x;
+    const uint8_t* class_row = classes[reach.y + row] + reach.x;
+    for (int col = 0; col < reach.width; ++col) {
+      const auto label = static_cast<size_t>(label_row[col]);
+      const bool opening = regions.is_opening[label] != 0;
+      opening_area(row, col) = opening ? static_cast<float>(regions.areas[label]) : 0.0f;
+      unknown_opening(row, col) = opening && class_row[col] == NavigationGrid::kUnknown ? 1 : 0;
     }
   }
+  // Beyond the grid's edge nothing is bordered: dilate's default border adds nothing.
+  const cv::Mat cross = cv::getStructuringElement(cv::MORPH_CROSS, cv::Size(3, 3));
+  cv::dilate(opening_area, opening_area, cross);
+  cv::dilate(unknown_opening, unknown_opening, cross);
+  const cv::Rect inner(free_cells.tl() - reach.tl(), free_cells.size());
+  const cv::Mat1b is_free = classes(free_cells) == NavigationGrid::kFree;
+  cv::Mat1f bordered(free_cells.size(), 0.0f);
+  opening_area(inner).copyTo(bordered, is_free);
+  cv::Mat1b faces_unknown(free_cells.size(), uint8_t{0});
+  unknown_opening(inner).copyTo(faces_unknown, is_free);
   cv::Mat1b is_frontier = bordered > 0;
   const double cell_area = grid.resolution() * grid.resolution();
   std::vector<Frontier> frontiers;
