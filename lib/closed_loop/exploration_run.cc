@@ -19,6 +19,7 @@
 #include "mapping/frame_localizer.h"
 #include "mapping/map_outputs.h"
 #include "mapping/stereo_mapper.h"
+#include "occupancy_grid/stereo_occupancy_grid_map.h"
 #include "simulator/ground_truth_map.h"
 #include "simulator/simulation.h"
 #include "simulator/simulation_recorder.h"
@@ -127,7 +128,11 @@ class ClosedLoopMapper {
     return map_pose;
   }
 
-  DisparityTaggedGrid grid() const { return gridOfMap(mapper_.map(), config_.mapping.grid.stereo.update.scale); }
+  // The map as a disparity-tagged grid: the stereo map's own, not a copy of it each frame.
+  const DisparityTaggedGrid& grid() const {
+    if (const auto* stereo = dynamic_cast<const CStereoOccupancyGridMap*>(&mapper_.map())) return stereo->grid();
+    return converted_.emplace(gridOfMap(mapper_.map(), config_.mapping.grid.stereo.update.scale));
+  }
   const StereoMapper& mapper() const { return mapper_; }
   size_t framesLocalized() const { return frames_localized_; }
   size_t framesFloorMeasured() const { return localizer_ ? localizer_->floorMeasuredSteps() : 0; }
@@ -139,6 +144,7 @@ class ClosedLoopMapper {
   FrontierExplorer& explorer_;
   std::unique_ptr<FrameLocalizer> localizer_;  // localized runs only
   size_t frames_localized_ = 0;
+  mutable std::optional<DisparityTaggedGrid> converted_;  // grid() of a map of another type
 };
 
 void fillFromSimulation(ExplorationReport& report, const Simulation& simulation, const mrpt::poses::CPose2D& start,
