@@ -3,6 +3,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace stereonav {
@@ -40,22 +41,25 @@ NavigationGrid::NavigationGrid(const DisparityTaggedGrid& grid, const std::vecto
       distance_horizon_m_(options.distance_horizon_m),
       cell_class_(grid.height(), grid.width()),
       sure_obstacle_(grid.height(), grid.width()) {
+  // Per occupancy value: its class, and whether it is a sure obstacle.
   const OccupancyScale& scale = grid.scale();
+  std::array<uint8_t, 256> class_of{}, sure_of{};
+  for (int g = 0; g < 256; ++g) {
+    const CellClass cell_class = scale.classify(static_cast<uint8_t>(g));
+    class_of[g] = cell_class == CellClass::kFree ? kFree : cell_class == CellClass::kUnknown ? kUnknown : kOccupied;
+    sure_of[g] = g >= options.sure_obstacle_g ? 1 : 0;
+  }
+  const float precise_min_disparity = options.precise_min_disparity;
   for (int row = 0; row < grid.height(); ++row) {
     const uint8_t* g = grid.occupancyRow(row);
     const float* tag = grid.tagRow(row);
     uint8_t* out = cell_class_[row];
     uint8_t* sure = sure_obstacle_[row];
     for (int col = 0; col < grid.width(); ++col) {
-      sure[col] = g[col] >= options.sure_obstacle_g ? 1 : 0;
-      switch (scale.classify(g[col])) {
-        case CellClass::kFree: out[col] = kFree; break;
-        case CellClass::kUnknown: out[col] = kUnknown; break;
-        case CellClass::kOccupied:
-          out[col] = tag[col] != DisparityTaggedGrid::kNoTag && tag[col] < options.precise_min_disparity ? kImprecise
-                                                                                                         : kOccupied;
-          break;
-      }
+      sure[col] = sure_of[g[col]];
+      const uint8_t cell_class = class_of[g[col]];
+      const bool imprecise = cell_class == kOccupied && tag[col] != DisparityTaggedGrid::kNoTag && tag[col] < precise_min_disparity;
+      out[col] = imprecise ? kImprecise : cell_class;
     }
   }
   for (const cv::Point2d& point : seen_free) {
@@ -67,12 +71,12 @@ NavigationGrid::NavigationGrid(const DisparityTaggedGrid& grid, const std::vecto
   for (const mrpt::poses::CPose2D& pose : visited) {
     int centre_col = 0, centre_row = 0;
     if (!cellAt(pose.x(), pose.y(), centre_col, centre_row)) continue;
-    for (int row = centre_row - reach; row <= centre_row + reach; ++row) {
-      for (int col = centre_col - reach; col <= centre_col + reach; ++col) {
-        if (!contains(col, row) || cell_class_(row, col) != kUnknown) continue;
-        if (std::hypot(centreX(col) - pose.x(), centreY(row) - pose.y()) <= body_radius_m) {
-          cell_class_(row, col) = kFree;
-        }
+    const int first_col = std::max(0, centre_col - reach), last_col = std::min(width() - 1, centre_col + reach);
+    for (int row = std::max(0, centre_row - reach); row <= std::min(height() - 1, centre_row + reach); ++row) {
+      uint8_t* classes = cell_class_[row];
+      for (int col = first_col; col <= last_col; ++col) {
+        if (classes[col] != kUnknown) continue;
+        if (std::hypot(centreX(col) - pose.x(), centreY(row) - pose.y()) <= body_radius_m) classes[col] = kFree;
       }
     }
   }
