@@ -52,6 +52,10 @@ class CostToGoField {
   void compute(const std::vector<GoalCell>& goals);
 
   bool traversable(int col, int row) const { return inBox(col, row) && traversable_(row - box_.y, col - box_.x) != 0; }
+  // The cells the field covers (the grid's free cells' box; nothing outside is traversable), and
+  // per cell of it whether it is traversable (1) or not (0), indexed from the box's corner.
+  const cv::Rect& box() const { return box_; }
+  const cv::Mat1b& traversableCells() const { return traversable_; }
   bool reachable(int col, int row) const { return inBox(col, row) && parent_[0][settledIndex(col, row)] >= 0; }
   double cost(int col, int row) const {
     return inBox(col, row) ? cost_[0][settledIndex(col, row)] : std::numeric_limits<double>::infinity();

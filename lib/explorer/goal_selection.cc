@@ -41,20 +41,26 @@ std::vector<GoalCell> GoalSelection::goals(const NavigationGrid& grid, const Cos
   // Looking from afar, a step nearer the frontier is worth more than any step of path costs
   // (at most 1 + repulsion_weight per metre): the nearest place the body reaches wins.
   const double distance_cost = look_from_m > 0.0 ? 2.0 * (1.0 + options_.repulsion_weight) : 0.0;
-  // The cells within reach of a frontier cell, row by row, with what standing there adds.
-  struct Offset {
-    int dc, dr;
-    double cost;
+  // The cells within reach of a frontier cell, row by row: a row's cells form one run, with what
+  // standing on each adds.
+  struct Run {
+    int dr, half_width;
+    std::vector<double> costs;  // from dc = -half_width on
   };
-  std::vector<Offset> disc;
+  std::vector<Run> disc;
   for (int dr = -reach; dr <= reach; ++dr) {
+    Run run{dr, -1, {}};
     for (int dc = -reach; dc <= reach; ++dc) {
-      if (dc * dc + dr * dr <= reach_sq) disc.push_back({dc, dr, std::hypot(dc, dr) * grid.resolution() * distance_cost});
+      if (dc * dc + dr * dr > reach_sq) continue;
+      run.half_width = std::abs(dc);
+      run.costs.push_back(std::hypot(dc, dr) * grid.resolution() * distance_cost);
     }
+    if (run.half_width >= 0) disc.push_back(std::move(run));
   }
   // Per cell of the free cells' box, where every traversable cell lies, the cheapest seed and its
   // frontier: goals of overlapping frontiers are not repeated.
-  const cv::Rect& box = grid.freeCells();
+  const cv::Rect& box = field.box();
+  const cv::Mat1b& traversable = field.traversableCells();
   cv::Mat1d seed(box.size(), std::numeric_limits<double>::infinity());
   cv::Mat1i label(box.size(), -1);
   for (size_t i = 0; i < frontiers.size(); ++i) {
@@ -62,13 +68,21 @@ std::vector<GoalCell> GoalSelection::goals(const NavigationGrid& grid, const Cos
     const double seed_cost = (isTarget(grid, frontiers[i], goal_radius, memory) ? 0.0 : options_.target_switch_penalty_m) +
                              (waits ? options_.pocket_penalty_m : 0.0);
     for (const cv::Point& cell : frontiers[i].cells) {
-      for (const Offset& offset : disc) {
-        const int c = cell.x + offset.dc, r = cell.y + offset.dr;
-        if (!field.traversable(c, r)) continue;
-        const double cost = seed_cost + offset.cost;
-        if (cost < seed(r - box.y, c - box.x)) {
-          seed(r - box.y, c - box.x) = cost;
-          label(r - box.y, c - box.x) = static_cast<int>(i);
+      for (const Run& run : disc) {
+        const int r = cell.y + run.dr - box.y;
+        if (r < 0 || r >= box.height) continue;
+        const int first = cell.x - run.half_width - box.x;
+        const int begin = std::max(0, first), end = std::min(box.width, cell.x + run.half_width + 1 - box.x);
+        const uint8_t* traversable_row = traversable[r];
+        double* seed_row = seed[r];
+        int* label_row = label[r];
+        for (int c = begin; c < end; ++c) {
+          if (!traversable_row[c]) continue;
+          const double cost = seed_cost + run.costs[static_cast<size_t>(c - first)];
+          if (cost < seed_row[c]) {
+            seed_row[c] = cost;
+            label_row[c] = static_cast<int>(i);
+          }
         }
       }
     }
