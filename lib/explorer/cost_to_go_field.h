@@ -42,7 +42,8 @@ struct GoalCell {
 // The wavefront spreads only as far as the queries need: a query settles its cell first, so the
 // explorer, which asks about the cells around the robot between two maps, pays for the cells
 // cheaper than the robot's and not for the rest of the building. The cells leave the wavefront
-// in the same order whenever it pauses, so every answer is the one a whole wavefront gives.
+// in the same order whenever it pauses, so every answer is the one a whole wavefront gives. So a
+// query changes the field's state: one thread at a time.
 class CostToGoField {
  public:
   CostToGoField(const NavigationGrid& grid, const CostToGoOptions& options);

@@ -58,8 +58,10 @@ void NearObstacleMemory::update(const std::vector<mrpt::math::TPoint2D>& sensed,
   };
   // Only points within remember_within_m are judged: the cells around the robot, not the whole
   // memory, which grows with the building.
-  walkCellsNear(cells_, options_.cell_m, pose.x(), pose.y(), options_.remember_within_m,
-                [&](auto it) { return seenPast(it->second) ? cells_.erase(it) : std::next(it); });
+  for (Cells* cells : {&remembered_, &candidates_}) {
+    walkCellsNear(*cells, options_.cell_m, pose.x(), pose.y(), options_.remember_within_m,
+                  [&](auto it) { return seenPast(it->second) ? cells->erase(it) : std::next(it); });
+  }
 
   for (const mrpt::math::TPoint2D& point : sensed) {
     if (std::hypot(point.x, point.y) > options_.remember_within_m) continue;
@@ -67,40 +69,51 @@ void NearObstacleMemory::update(const std::vector<mrpt::math::TPoint2D>& sensed,
     pose.composePoint(point.x, point.y, x, y);
     if (!confirmed(x, y)) continue;
     const mrpt::math::TPoint2D view(pose.x(), pose.y());
-    const auto [it, inserted] = cells_.try_emplace({std::lround(x / options_.cell_m), std::lround(y / options_.cell_m)},
-                                                   Cell{mrpt::math::TPoint2D(x, y), view, false});
+    const std::pair<long, long> key = keyOf(x, y);
+    if (const auto known = remembered_.find(key); known != remembered_.end()) {
+      known->second.point = mrpt::math::TPoint2D(x, y);
+      continue;
+    }
+    const auto [it, inserted] = candidates_.try_emplace(key, Cell{mrpt::math::TPoint2D(x, y), view});
     if (inserted) continue;
-    Cell& cell = it->second;
-    cell.point = mrpt::math::TPoint2D(x, y);
-    if (std::hypot(view.x - cell.first_view.x, view.y - cell.first_view.y) >= options_.distinct_views_m) {
-      cell.remembered = true;
+    it->second.point = mrpt::math::TPoint2D(x, y);
+    if (std::hypot(view.x - it->second.first_view.x, view.y - it->second.first_view.y) >= options_.distinct_views_m) {
+      remembered_.insert(candidates_.extract(it));
     }
   }
 }
 
 void NearObstacleMemory::remember(const std::vector<mrpt::math::TPoint2D>& points) {
   for (const mrpt::math::TPoint2D& point : points) {
-    cells_[{std::lround(point.x / options_.cell_m), std::lround(point.y / options_.cell_m)}] = Cell{point, point, true};
+    const std::pair<long, long> key = keyOf(point.x, point.y);
+    candidates_.erase(key);
+    remembered_[key] = Cell{point, point};
   }
+}
+
+std::pair<long, long> NearObstacleMemory::keyOf(double x, double y) const {
+  return {std::lround(x / options_.cell_m), std::lround(y / options_.cell_m)};
 }
 
 size_t NearObstacleMemory::forgetUnconfirmed(const std::function<bool(double x, double y)>& confirmed) {
   size_t forgotten = 0;
-  for (auto it = cells_.begin(); it != cells_.end();) {
-    if (confirmed(it->second.point.x, it->second.point.y)) {
-      ++it;
-      continue;
+  for (Cells* cells : {&remembered_, &candidates_}) {
+    for (auto it = cells->begin(); it != cells->end();) {
+      if (confirmed(it->second.point.x, it->second.point.y)) {
+        ++it;
+        continue;
+      }
+      forgotten += cells == &remembered_ ? 1 : 0;
+      it = cells->erase(it);
     }
-    forgotten += it->second.remembered ? 1 : 0;
-    it = cells_.erase(it);
   }
   return forgotten;
 }
 
 std::vector<mrpt::math::TPoint2D> NearObstacleMemory::pointsNear(double x, double y, double radius) const {
   std::vector<mrpt::math::TPoint2D> points;
-  walkCellsNear(cells_, options_.cell_m, x, y, radius, [&](auto it) {
-    if (it->second.remembered) points.push_back(it->second.point);
+  walkCellsNear(remembered_, options_.cell_m, x, y, radius, [&](auto it) {
+    points.push_back(it->second.point);
     return std::next(it);
   });
   return points;
@@ -108,15 +121,11 @@ std::vector<mrpt::math::TPoint2D> NearObstacleMemory::pointsNear(double x, doubl
 
 std::vector<mrpt::math::TPoint2D> NearObstacleMemory::points() const {
   std::vector<mrpt::math::TPoint2D> points;
-  for (const auto& cell : cells_) {
-    if (cell.second.remembered) points.push_back(cell.second.point);
-  }
+  points.reserve(remembered_.size());
+  for (const auto& cell : remembered_) points.push_back(cell.second.point);
   return points;
 }
 
-size_t NearObstacleMemory::size() const {
-  return static_cast<size_t>(
-      std::count_if(cells_.begin(), cells_.end(), [](const auto& cell) { return cell.second.remembered; }));
-}
+size_t NearObstacleMemory::size() const { return remembered_.size(); }
 
 }  // namespace stereonav

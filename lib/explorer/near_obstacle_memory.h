@@ -63,11 +63,15 @@ class NearObstacleMemory {
   struct Cell {
     mrpt::math::TPoint2D point;       // the newest sighting
     mrpt::math::TPoint2D first_view;  // where the robot stood when it first saw it
-    bool remembered = false;
   };
+  using Cells = std::map<std::pair<long, long>, Cell>;
+  std::pair<long, long> keyOf(double x, double y) const;
 
   NearObstacleMemoryOptions options_;
-  std::map<std::pair<long, long>, Cell> cells_;  // remembered points and candidates
+  // Apart, so that reading the remembered points (each map, for the planner) does not walk the
+  // candidates, which pile up along every wall the robot passes.
+  Cells remembered_;
+  Cells candidates_;  // seen from one place so far
 };
 
 }  // namespace stereonav
