@@ -19,7 +19,6 @@
 #include "mapping/frame_localizer.h"
 #include "mapping/map_outputs.h"
 #include "mapping/stereo_mapper.h"
-#include "occupancy_grid/stereo_occupancy_grid_map.h"
 #include "simulator/ground_truth_map.h"
 #include "simulator/simulation.h"
 #include "simulator/simulation_recorder.h"
@@ -130,7 +129,7 @@ class ClosedLoopMapper {
 
   // The map as a disparity-tagged grid: the stereo map's own, not a copy of it each frame.
   const DisparityTaggedGrid& grid() const {
-    if (const auto* stereo = dynamic_cast<const CStereoOccupancyGridMap*>(&mapper_.map())) return stereo->grid();
+    if (const DisparityTaggedGrid* own = ownGridOf(mapper_.map())) return *own;
     return converted_.emplace(gridOfMap(mapper_.map(), config_.mapping.grid.stereo.update.scale));
   }
   const StereoMapper& mapper() const { return mapper_; }

@@ -73,10 +73,13 @@ void saveScene(const mrpt::maps::CMetricMap& map, const std::vector<mrpt::poses:
 
 }  // namespace
 
+const DisparityTaggedGrid* ownGridOf(const mrpt::maps::CMetricMap& map) {
+  const auto* stereo = dynamic_cast<const CStereoOccupancyGridMap*>(&map);
+  return stereo != nullptr ? &stereo->grid() : nullptr;
+}
+
 DisparityTaggedGrid gridOfMap(const mrpt::maps::CMetricMap& map, const OccupancyScale& scale) {
-  if (const auto* stereo = dynamic_cast<const CStereoOccupancyGridMap*>(&map)) {
-    return stereo->grid();
-  }
+  if (const DisparityTaggedGrid* own = ownGridOf(map)) return *own;
   if (const auto* mrpt_grid = dynamic_cast<const mrpt::maps::COccupancyGridMap2D*>(&map)) {
     return fromMrptOccupancyGrid(*mrpt_grid, scale);
   }

@@ -16,6 +16,8 @@ namespace stereonav {
 // MRPT's 8-bit log-odds cells near the middle of the scale). Throws std::invalid_argument for
 // any other map type.
 DisparityTaggedGrid gridOfMap(const mrpt::maps::CMetricMap& map, const OccupancyScale& scale);
+// The map's own grid when it is a CStereoOccupancyGridMap (no copy), else nullptr.
+const DisparityTaggedGrid* ownGridOf(const mrpt::maps::CMetricMap& map);
 
 // Writes, each atomically:
 //   <prefix>.gridmap   MRPT's serialised COccupancyGridMap2D, gzip-compressed (grid_io.h)
