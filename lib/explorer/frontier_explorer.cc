@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <utility>
 
 #include "explorer/escape_search.h"
 #include "explorer/plan_image.h"
@@ -57,7 +58,7 @@ void FrontierExplorer::updateMap(const DisparityTaggedGrid& grid, const mrpt::po
   if (grid_) goals_.carryTargetOver(*grid_, frontiers_, frontier_memory_);
   seen_free_.update(grid, pose);
   grid_ = std::make_unique<NavigationGrid>(grid, visited_, grid_options_, guard_.rememberedObstacles(),
-                                           seen_free_.cells(), grid_.get());
+                                           seen_free_.cells(), std::move(grid_));
   // What the robot remembers now was kept when planning relaxed past specks (recoverUnreachable)
   // or learnt since, the guard having held it there: a post, not a mismatch.
   if (relaxation_ >= Relaxation::kBareBodyPastSpecks) grid_->freeSpecks(options_.speck_cells, guard_.rememberedObstacles());

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <utility>
 
 namespace stereonav {
 namespace {
@@ -36,7 +37,7 @@ cv::Rect grownInside(const cv::Rect& box, int cells, const cv::Size& size) {
 
 NavigationGrid::NavigationGrid(const DisparityTaggedGrid& grid, const std::vector<mrpt::poses::CPose2D>& visited,
                                const NavigationGridOptions& options, const std::vector<cv::Point2d>& contacts,
-                               const std::vector<cv::Point2d>& seen_free, const NavigationGrid* previous)
+                               const std::vector<cv::Point2d>& seen_free, std::unique_ptr<NavigationGrid> previous)
     : frame_(grid.frame()),
       distance_horizon_m_(options.distance_horizon_m),
       cell_class_(grid.height(), grid.width()),
@@ -91,8 +92,8 @@ NavigationGrid::NavigationGrid(const DisparityTaggedGrid& grid, const std::vecto
                           previous->frame_.resolution == frame_.resolution &&
                           previous->distance_horizon_m_ == distance_horizon_m_;
   if (same_cells && horizonCells() > 0) {
-    clearance_m_ = previous->clearance_m_.clone();
-    obstacle_distance_m_ = previous->obstacle_distance_m_.clone();
+    clearance_m_ = std::move(previous->clearance_m_);
+    obstacle_distance_m_ = std::move(previous->obstacle_distance_m_);
     updateDistances(previous->cell_class_);
   } else {
     computeDistances();
@@ -207,12 +208,6 @@ double NavigationGrid::clearanceAt(double x, double y, double search_m) const {
     }
   }
   return nearest;
-}
-
-bool NavigationGrid::cellAt(double x, double y, int& col, int& row) const {
-  col = static_cast<int>(std::floor((x - frame_.origin_x) / frame_.resolution));
-  row = static_cast<int>(std::floor((y - frame_.origin_y) / frame_.resolution));
-  return contains(col, row);
 }
 
 }  // namespace stereonav

@@ -4,7 +4,9 @@
 
 #include <opencv2/core.hpp>
 
+#include <cmath>
 #include <limits>
+#include <memory>
 #include <vector>
 
 #include "occupancy_grid/disparity_tagged_grid.h"
@@ -51,16 +53,21 @@ class NavigationGrid {
   // paper section 6.1): their cells are occupied, as a bumper would report them.
   // `seen_free` are points the robot has seen free from up close (seen_free_memory.h): their
   // cells are free where the map holds them unknown or imprecise. `previous`: the grid made from
-  // the map before (e.g. a frame earlier), whose distances are kept where they still hold.
+  // the map before (e.g. a frame earlier), whose distances are kept where they still hold; it is
+  // used up (its distances move here rather than being copied, a map's worth each frame).
   NavigationGrid(const DisparityTaggedGrid& grid, const std::vector<mrpt::poses::CPose2D>& visited,
                  const NavigationGridOptions& options, const std::vector<cv::Point2d>& contacts = {},
-                 const std::vector<cv::Point2d>& seen_free = {}, const NavigationGrid* previous = nullptr);
+                 const std::vector<cv::Point2d>& seen_free = {}, std::unique_ptr<NavigationGrid> previous = nullptr);
 
   int width() const { return cell_class_.cols; }
   int height() const { return cell_class_.rows; }
   double resolution() const { return frame_.resolution; }
   bool contains(int col, int row) const { return col >= 0 && row >= 0 && col < width() && row < height(); }
-  bool cellAt(double x, double y, int& col, int& row) const;
+  bool cellAt(double x, double y, int& col, int& row) const {
+    col = static_cast<int>(std::floor((x - frame_.origin_x) / frame_.resolution));
+    row = static_cast<int>(std::floor((y - frame_.origin_y) / frame_.resolution));
+    return contains(col, row);
+  }
   double centreX(int col) const { return frame_.origin_x + (col + 0.5) * frame_.resolution; }
   double centreY(int row) const { return frame_.origin_y + (row + 0.5) * frame_.resolution; }
 

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 
 #include "test_grids.h"
 
@@ -160,8 +161,8 @@ TEST(NavigationGridTest, AGridMadeAfterAnotherTakesAgainOnlyWhatChangedAndHoldsT
   after.free(5, 5, 54, 34).occupied(12, 5, 12, 18).occupied(40, 30, 40, 30);
   NavigationGridOptions options;
   options.distance_horizon_m = 0.5;
-  const NavigationGrid previous(before.grid(), {}, options);
-  const NavigationGrid updated(after.grid(), {}, options, {}, {}, &previous);
+  const NavigationGrid updated(after.grid(), {}, options, {}, {},
+                               std::make_unique<NavigationGrid>(before.grid(), std::vector<mrpt::poses::CPose2D>{}, options));
   const NavigationGrid fresh(after.grid(), {}, options);
   expectSameDistancesWithin(updated, fresh, 0.5);
   // Beside the new wall, 2 cells east of it, both say (2 - 0.5) x 0.1.
@@ -170,7 +171,8 @@ TEST(NavigationGridTest, AGridMadeAfterAnotherTakesAgainOnlyWhatChangedAndHoldsT
   // Where the pillar stood, nothing is near any more.
   EXPECT_GE(updated.obstacleDistance(30, 20), 0.5f);
 
-  NavigationGrid specks_freed(after.grid(), {}, options, {}, {}, &previous);
+  NavigationGrid specks_freed(after.grid(), {}, options, {}, {},
+                              std::make_unique<NavigationGrid>(before.grid(), std::vector<mrpt::poses::CPose2D>{}, options));
   specks_freed.freeSpecks(1);
   NavigationGrid specks_freed_fresh(after.grid(), {}, options);
   specks_freed_fresh.freeSpecks(1);
