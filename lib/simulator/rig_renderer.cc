@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "disparity/disparity_image.h"
 
@@ -17,6 +18,12 @@ constexpr double kDiffuse = 0.45;
 constexpr double kEmptyBrightness = 140.0;
 // Grazing views would have unbounded footprints; past this obliquity detail is simply gone.
 constexpr double kMinimumCosine = 0.15;
+
+bool sameSolid(const Solid& a, const Solid& b) {
+  return a.shape == b.shape && a.x == b.x && a.y == b.y && a.half_x == b.half_x && a.half_y == b.half_y &&
+         a.cos_yaw == b.cos_yaw && a.sin_yaw == b.sin_yaw && a.radius == b.radius && a.z_min == b.z_min &&
+         a.z_max == b.z_max && a.texture == b.texture && a.texture_offset == b.texture_offset;
+}
 
 }  // namespace
 
@@ -46,30 +53,93 @@ mrpt::poses::CPose3D RigRenderer::secondaryPose(const mrpt::poses::CPose2D& robo
                               0.0, 0.0);
 }
 
+bool RigRenderer::mayBeSeen(const Solid& solid, const mrpt::poses::CPose2D& robot_pose) const {
+  // Only the pixels its bounding box projects onto can see a solid; that box lies in front of a
+  // camera, or partly behind it (then every pixel may see it), or wholly behind.
+  const FloorExtent extent = solid.floorExtent();
+  const PinholeCamera& camera = rig_.reference;
+  const auto seen_by = [&](const mrpt::poses::CPose3D& optical_pose) {
+    double u_min = std::numeric_limits<double>::infinity(), u_max = -u_min, v_min = u_min, v_max = -u_min;
+    int behind = 0;
+    for (const double x : {extent.x_min, extent.x_max}) {
+      for (const double y : {extent.y_min, extent.y_max}) {
+        for (const double z : {solid.z_min, solid.z_max}) {
+          double cam_x = 0.0, cam_y = 0.0, cam_z = 0.0;
+          optical_pose.inverseComposePoint(x, y, z, cam_x, cam_y, cam_z);
+          if (cam_z <= 0.0) {
+            ++behind;
+            continue;
+          }
+          const double u = camera.cx + camera.focal_px * cam_x / cam_z, v = camera.cy + camera.focal_px * cam_y / cam_z;
+          u_min = std::min(u_min, u);
+          u_max = std::max(u_max, u);
+          v_min = std::min(v_min, v);
+          v_max = std::max(v_max, v);
+        }
+      }
+    }
+    if (behind == 8) return false;
+    if (behind > 0) return true;
+    // A pixel's ray passes through its centre; a pixel of margin covers the rounding.
+    return u_max >= -1.0 && u_min <= camera.width && v_max >= -1.0 && v_min <= camera.height;
+  };
+  const mrpt::poses::CPose3D reference_pose = referencePose(robot_pose);
+  if (seen_by(reference_pose)) return true;
+  for (size_t i = 0; i < rig_.secondaries.size(); ++i) {
+    if (seen_by(secondaryPose(robot_pose, i))) return true;
+  }
+  return false;
+}
+
+bool RigRenderer::sameView(const mrpt::poses::CPose2D& robot_pose, double gain,
+                           const std::vector<Solid>& moving_solids) const {
+  if (!traced_.valid || robot_pose.x() != traced_.robot_pose.x() || robot_pose.y() != traced_.robot_pose.y() ||
+      robot_pose.phi() != traced_.robot_pose.phi() || gain != traced_.gain ||
+      moving_solids.size() != traced_.moving_solids.size()) {
+    return false;
+  }
+  for (size_t i = 0; i < moving_solids.size(); ++i) {
+    const Solid& now = moving_solids[i];
+    const Solid& then = traced_.moving_solids[i];
+    if (!sameSolid(now, then) && (mayBeSeen(now, robot_pose) || mayBeSeen(then, robot_pose))) return false;
+  }
+  return true;
+}
+
 RigImages RigRenderer::render(const mrpt::poses::CPose2D& robot_pose, double time_s,
                               const std::vector<Solid>& moving_solids) {
-  ray_caster_.setMovingSolids(moving_solids);
   const double gain = world_.lightingGain(time_s);
   const PinholeCamera& camera = rig_.reference;
+  // A robot standing still (a look held at a frontier) sees what it saw: the noise-free
+  // images are traced again only when the view or something in it changed.
+  if (!sameView(robot_pose, gain, moving_solids)) {
+    ray_caster_.setMovingSolids(moving_solids);
+    traced_.reference.create(camera.height, camera.width);
+    traced_.depth.create(camera.height, camera.width);
+    const mrpt::poses::CPose3D reference_pose = referencePose(robot_pose);
+    const Eigen::Vector3d viewpoint(reference_pose.x(), reference_pose.y(), reference_pose.z());
+    traceCamera(reference_pose, viewpoint, gain, &traced_.reference, &traced_.depth);
+    traced_.secondaries.resize(rig_.secondaries.size());
+    for (size_t i = 0; i < rig_.secondaries.size(); ++i) {
+      traced_.secondaries[i].create(camera.height, camera.width);
+      traceCamera(secondaryPose(robot_pose, i), viewpoint, gain, &traced_.secondaries[i], nullptr);
+    }
+    traced_.valid = true;
+    traced_.robot_pose = robot_pose;
+    traced_.gain = gain;
+  }
+  traced_.moving_solids = moving_solids;
   RigImages images;
-  cv::Mat1f brightness(camera.height, camera.width);
-  cv::Mat1f depth(camera.height, camera.width);
-  const mrpt::poses::CPose3D reference_pose = referencePose(robot_pose);
-  const Eigen::Vector3d viewpoint(reference_pose.x(), reference_pose.y(), reference_pose.z());
-  traceCamera(reference_pose, viewpoint, gain, &brightness, &depth);
-  images.reference = withSensorNoise(brightness);
+  images.reference = withSensorNoise(traced_.reference);
   images.true_disparity.create(camera.height, camera.width);
   const double f_times_b = camera.focal_px * rig_.baseline_m;
   for (int y = 0; y < camera.height; ++y) {
     for (int x = 0; x < camera.width; ++x) {
-      const float z = depth(y, x);
+      const float z = traced_.depth(y, x);
       images.true_disparity(y, x) = z == kNoHit ? kInvalidDisparity : static_cast<float>(f_times_b / z);
     }
   }
-  for (size_t i = 0; i < rig_.secondaries.size(); ++i) {
-    traceCamera(secondaryPose(robot_pose, i), viewpoint, gain, &brightness, nullptr);
-    images.secondaries.push_back(withSensorNoise(brightness));
-  }
+  for (const cv::Mat1f& brightness : traced_.secondaries) images.secondaries.push_back(withSensorNoise(brightness));
   return images;
 }
 

@@ -60,6 +60,11 @@ class RigRenderer {
   void traceCamera(const mrpt::poses::CPose3D& optical_pose, const Eigen::Vector3d& footprint_viewpoint,
                    double gain, cv::Mat1f* brightness, cv::Mat1f* depth);
   cv::Mat1b withSensorNoise(const cv::Mat1f& brightness);
+  // Whether any camera of the rig at `robot_pose` may see `solid` (conservative).
+  bool mayBeSeen(const Solid& solid, const mrpt::poses::CPose2D& robot_pose) const;
+  // Whether tracing at `robot_pose` with lighting `gain` and `moving_solids` gives traced_ again:
+  // the same pose and light, and no moving solid moved where a camera may see it, before or after.
+  bool sameView(const mrpt::poses::CPose2D& robot_pose, double gain, const std::vector<Solid>& moving_solids) const;
 
   const World& world_;
   CameraRig rig_;
@@ -77,6 +82,16 @@ class RigRenderer {
   };
   SeenSurfaces seen_;
   AlbedoSampler albedo_sampler_;
+  // The last noise-free images traced, and what they were traced from.
+  struct TracedView {
+    bool valid = false;
+    mrpt::poses::CPose2D robot_pose;
+    double gain = 0.0;
+    std::vector<Solid> moving_solids;  // where they were at the last frame, traced or not
+    cv::Mat1f reference, depth;
+    std::vector<cv::Mat1f> secondaries;
+  };
+  TracedView traced_;
   std::vector<AlbedoQuery> queries_;  // what to sample at each of seen_
   std::vector<double> albedos_;
 };

@@ -211,5 +211,30 @@ TEST(RigRenderer, PoseOfTheRobotMovesTheView) {
   EXPECT_NEAR(images.true_disparity(30, 79), 10.0 / 4.0, 1e-4);
 }
 
+TEST(RigRenderer, ARobotStandingStillSeesWhatAFreshRendererSeesWhateverMoves) {
+  // The robot stands at the origin facing a wall at x = 6 while a person (r = 0.25) walks behind
+  // it, steps onto the optical axis at x = 3 and back out of view. The renderer traces again only
+  // when something changes in view; every frame must equal a fresh renderer's.
+  const World world = worldFromText("[wall.w]\npoints = 6.05 -50; 6.05 50\nheight = 50\n");
+  const mrpt::poses::CPose2D pose(0, 0, 0);
+  const auto person = [](double x, double y) { return std::vector<Solid>{Solid::cylinder(x, y, 0.25, 0.0, 1.8, 0)}; };
+  const std::vector<std::vector<Solid>> frames = {person(-3, 0), person(-3, 1), person(3, 0), person(-3, 1), person(-3, 1)};
+  const auto same = [](const cv::Mat& a, const cv::Mat& b) { return cv::countNonZero(a != b) == 0; };
+  RigRenderer standing(world, smallRig(), noiseless());
+  for (size_t i = 0; i < frames.size(); ++i) {
+    const RigImages seen = standing.render(pose, 0.0, frames[i]);
+    RigRenderer fresh(world, smallRig(), noiseless());
+    const RigImages expected = fresh.render(pose, 0.0, frames[i]);
+    EXPECT_TRUE(same(seen.reference, expected.reference)) << "frame " << i;
+    EXPECT_TRUE(same(seen.true_disparity, expected.true_disparity)) << "frame " << i;
+    ASSERT_EQ(seen.secondaries.size(), 2u);
+    for (size_t j = 0; j < seen.secondaries.size(); ++j) {
+      EXPECT_TRUE(same(seen.secondaries[j], expected.secondaries[j])) << "frame " << i << ", camera " << j;
+    }
+    // On the optical axis the wall, or the person's front at 3 - 0.25 m.
+    EXPECT_NEAR(seen.true_disparity(59, 79), i == 2 ? 10.0 / 2.75 : 10.0 / 6.0, 1e-3) << "frame " << i;
+  }
+}
+
 }  // namespace
 }  // namespace stereonav
