@@ -14,22 +14,31 @@ namespace {
 // region of unresolved cells each of which has a resolved cell among its 8 neighbours (none is
 // farther than 1.5 cells from one), touching a precise obstacle.
 //
-// The unresolved regions (8-connected labels, 0 on resolved cells) and, per label, its cell count
-// and whether it is an opening rather than a seam.
+// The unresolved regions (8-connected labels over `window`, 0 on resolved cells) and, per label,
+// its cell count over the whole grid and whether it is an opening rather than a seam.
 struct OpeningRegions {
+  cv::Rect window;
   cv::Mat1i labels;
   std::vector<int> areas;
   std::vector<uint8_t> is_opening;
 };
 
+// Only the resolved cells' box and a ring of two unknown cells around it are labelled: each side
+// of the ring is one region with the unknown cells beyond it, which are neither resolved nor next
+// to a resolved cell nor to an obstacle, so they change no label's kind and only add their count
+// to the ring's label. Beyond a side there are no cells where the ring meets the grid's edge.
 OpeningRegions openingRegions(const NavigationGrid& grid) {
-  const cv::Mat1b& classes = grid.cellClasses();
+  const cv::Mat1b& all_classes = grid.cellClasses();
+  OpeningRegions regions;
+  const cv::Rect& resolved = grid.resolvedCells();
+  regions.window = (resolved - cv::Point(2, 2) + cv::Size(4, 4)) & cv::Rect(cv::Point(), all_classes.size());
+  const cv::Mat1b classes = all_classes(regions.window);
   cv::Mat1b unresolved;
   cv::inRange(classes, NavigationGrid::kUnknown, NavigationGrid::kImprecise, unresolved);
-  OpeningRegions regions;
   const int count = cv::connectedComponents(unresolved, regions.labels, 8, CV_32S);
-  // The cells with no resolved 8-neighbour (the grid's edge does not count as resolved), and
-  // those with a precise obstacle among their 8 neighbours (nothing beyond the edge).
+  // The cells with no resolved 8-neighbour (the grid's edge does not count as resolved, nor do the
+  // unknown cells beyond the window), and those with a precise obstacle among their 8 neighbours
+  // (nothing beyond the edge or the window).
   cv::Mat1b interior, beside_obstacle;
   cv::erode(unresolved, interior, cv::Mat());
   cv::dilate(classes == NavigationGrid::kOccupied, beside_obstacle, cv::Mat());
@@ -46,6 +55,16 @@ OpeningRegions openingRegions(const NavigationGrid& grid) {
       if (beside_row[col]) touches_obstacle[label] = 1;
     }
   }
+  // The cells beyond the window: the columns left and right of it at every row, and the rows
+  // below and above it within its columns, each part added to the label of the ring beside it.
+  // Parts that touch (a side part and an end part) are one region and the ring's sides one label.
+  const cv::Rect& w = regions.window;
+  const int grid_cols = all_classes.cols, grid_rows = all_classes.rows;
+  const int last_col = w.width - 1, last_row = w.height - 1;
+  regions.areas[regions.labels(0, 0)] += w.x * grid_rows;
+  regions.areas[regions.labels(0, last_col)] += (grid_cols - w.x - w.width) * grid_rows;
+  regions.areas[regions.labels(0, 0)] += w.y * w.width;
+  regions.areas[regions.labels(last_row, 0)] += (grid_rows - w.y - w.height) * w.width;
   regions.is_opening.assign(static_cast<size_t>(count), 0);
   for (int label = 1; label < count; ++label) regions.is_opening[label] = !(thin[label] && touches_obstacle[label]);
   return regions;
@@ -54,7 +73,6 @@ OpeningRegions openingRegions(const NavigationGrid& grid) {
 }  // namespace
 
 std::vector<Frontier> findFrontiers(const NavigationGrid& grid, int min_cells) {
-  const OpeningRegions regions = openingRegions(grid);
   // A free cell is a frontier cell when one of its 4-neighbours belongs to an opening: per cell,
   // the largest area (cells) of the openings among them, and whether one of them is an unknown
   // cell rather than an obstacle seen from far. Per grid cell first, its own opening's area and
@@ -63,12 +81,13 @@ std::vector<Frontier> findFrontiers(const NavigationGrid& grid, int min_cells) {
   // taken, grown by the cells its crosses reach.
   const cv::Rect& free_cells = grid.freeCells();
   if (free_cells.empty()) return {};
+  const OpeningRegions regions = openingRegions(grid);
   const cv::Mat1b& classes = grid.cellClasses();
   const cv::Rect reach = (free_cells - cv::Point(1, 1) + cv::Size(2, 2)) & cv::Rect(cv::Point(), classes.size());
   cv::Mat1f opening_area(reach.size());
   cv::Mat1b unknown_opening(reach.size());
   for (int row = 0; row < reach.height; ++row) {
-    const int* label_row = regions.labels[reach.y + row] + reach.x;
+    const int* label_row = regions.labels[reach.y - regions.window.y + row] + reach.x - regions.window.x;
     const uint8_t* class_row = classes[reach.y + row] + reach.x;
     for (int col = 0; col < reach.width; ++col) {
       const auto label = static_cast<size_t>(label_row[col]);

@@ -50,22 +50,33 @@ NavigationGrid::NavigationGrid(const DisparityTaggedGrid& grid, const std::vecto
     class_of[g] = cell_class == CellClass::kFree ? kFree : cell_class == CellClass::kUnknown ? kUnknown : kOccupied;
     sure_of[g] = g >= options.sure_obstacle_g ? 1 : 0;
   }
+  // Cells the map never wrote are unknown and no sure obstacle: only its written cells are
+  // classified, and the cells stamped below widen the box of resolved cells.
+  cell_class_.setTo(kUnknown);
+  sure_obstacle_.setTo(0);
+  const CellWindow& written = grid.writtenCells();
   const float precise_min_disparity = options.precise_min_disparity;
-  for (int row = 0; row < grid.height(); ++row) {
+  for (int row = written.row_begin; row < written.row_end; ++row) {
     const uint8_t* g = grid.occupancyRow(row);
     const float* tag = grid.tagRow(row);
     uint8_t* out = cell_class_[row];
     uint8_t* sure = sure_obstacle_[row];
-    for (int col = 0; col < grid.width(); ++col) {
+    for (int col = written.col_begin; col < written.col_end; ++col) {
       sure[col] = sure_of[g[col]];
       const uint8_t cell_class = class_of[g[col]];
       const bool imprecise = cell_class == kOccupied && tag[col] != DisparityTaggedGrid::kNoTag && tag[col] < precise_min_disparity;
       out[col] = imprecise ? kImprecise : cell_class;
     }
   }
+  resolved_cells_ = cv::Rect(written.col_begin, written.row_begin, written.col_end - written.col_begin,
+                             written.row_end - written.row_begin);
+  const auto stamped = [this](int col, int row) { resolved_cells_ |= cv::Rect(col, row, 1, 1); };
   for (const cv::Point2d& point : seen_free) {
     int col = 0, row = 0;
-    if (cellAt(point.x, point.y, col, row) && cell_class_(row, col) != kOccupied) cell_class_(row, col) = kFree;
+    if (cellAt(point.x, point.y, col, row) && cell_class_(row, col) != kOccupied) {
+      cell_class_(row, col) = kFree;
+      stamped(col, row);
+    }
   }
   const double body_radius_m = options.body_radius_m;
   const int reach = static_cast<int>(std::ceil(body_radius_m / frame_.resolution));
@@ -73,19 +84,28 @@ NavigationGrid::NavigationGrid(const DisparityTaggedGrid& grid, const std::vecto
     int centre_col = 0, centre_row = 0;
     if (!cellAt(pose.x(), pose.y(), centre_col, centre_row)) continue;
     const int first_col = std::max(0, centre_col - reach), last_col = std::min(width() - 1, centre_col + reach);
-    for (int row = std::max(0, centre_row - reach); row <= std::min(height() - 1, centre_row + reach); ++row) {
+    const int first_row = std::max(0, centre_row - reach), last_row = std::min(height() - 1, centre_row + reach);
+    for (int row = first_row; row <= last_row; ++row) {
       uint8_t* classes = cell_class_[row];
       for (int col = first_col; col <= last_col; ++col) {
         if (classes[col] != kUnknown) continue;
         if (std::hypot(centreX(col) - pose.x(), centreY(row) - pose.y()) <= body_radius_m) classes[col] = kFree;
       }
     }
+    stamped(first_col, first_row);
+    stamped(last_col, last_row);
   }
   for (const cv::Point2d& contact : contacts) {
     int col = 0, row = 0;
-    if (cellAt(contact.x, contact.y, col, row)) cell_class_(row, col) = kOccupied;
+    if (cellAt(contact.x, contact.y, col, row)) {
+      cell_class_(row, col) = kOccupied;
+      stamped(col, row);
+    }
   }
-  free_cells_ = cv::boundingRect(cell_class_ == kFree);
+  if (!resolved_cells_.empty()) {
+    const cv::Rect free_cells = cv::boundingRect(cell_class_(resolved_cells_) == kFree);
+    if (!free_cells.empty()) free_cells_ = free_cells + resolved_cells_.tl();
+  }
   if (options.max_hole_cells > 0) freeIslands(kUnknown, kUnknown, 4, options.max_hole_cells);
   const bool same_cells = previous != nullptr && previous->cell_class_.size() == cell_class_.size() &&
                           previous->frame_.origin_x == frame_.origin_x && previous->frame_.origin_y == frame_.origin_y &&
@@ -94,7 +114,7 @@ NavigationGrid::NavigationGrid(const DisparityTaggedGrid& grid, const std::vecto
   if (same_cells && horizonCells() > 0) {
     clearance_m_ = std::move(previous->clearance_m_);
     obstacle_distance_m_ = std::move(previous->obstacle_distance_m_);
-    updateDistances(previous->cell_class_);
+    updateDistances(previous->cell_class_, previous->resolved_cells_);
   } else {
     computeDistances();
   }
@@ -109,7 +129,7 @@ void NavigationGrid::freeSpecks(int max_cells, const std::vector<cv::Point2d>& k
   }
   freeIslands(kImprecise, kOccupied, 8, max_cells, kept_cells);
   if (horizonCells() > 0) {
-    updateDistances(classes_before);
+    updateDistances(classes_before, resolved_cells_);
   } else {
     computeDistances();
   }
@@ -130,12 +150,15 @@ void NavigationGrid::computeDistances() {
   obstacle_distance_m_ = distanceToBlocked(cell_class_, kImprecise, near_free, frame_.resolution);
 }
 
-void NavigationGrid::updateDistances(const cv::Mat1b& classes_before) {
+void NavigationGrid::updateDistances(const cv::Mat1b& classes_before, const cv::Rect& resolved_before) {
   // A cell farther than the horizon from every changed cell keeps its distances: a nearer
   // blocked cell it had is still there, and any new one is beyond the horizon. The cells within
   // it are taken again in a window grown by the horizon once more, so that their nearer blocked
   // cells lie inside and its blocked ring lies beyond the horizon.
-  const cv::Rect changed = cv::boundingRect(cell_class_ != classes_before);
+  // Outside both grids' resolved cells every cell is unknown in both.
+  const cv::Rect compared = resolved_cells_ | resolved_before;
+  if (compared.empty()) return;
+  const cv::Rect changed = cv::boundingRect(cell_class_(compared) != classes_before(compared)) + compared.tl();
   if (changed.empty()) return;
   const int reach = horizonCells();
   const cv::Rect updated = grownInside(changed, reach, cell_class_.size());

@@ -85,6 +85,10 @@ class NavigationGrid {
   // The free cells' bounding box: no cell outside it is free, so whatever only free cells have
   // (frontiers, clearance, traversability) is looked for inside it.
   const cv::Rect& freeCells() const { return free_cells_; }
+  // The box outside which every cell is unknown (the map's written cells and the cells the
+  // robot's own positions and memories stamped): what looks for resolved cells, or for the
+  // unknown regions they border, looks inside it.
+  const cv::Rect& resolvedCells() const { return resolved_cells_; }
   // Distance from the cell's centre to the nearest cell that is not free (or to the grid's edge),
   // counted to that cell's near edge: a disc of this radius at the centre overlaps free cells only.
   // Exact up to the options' distance_horizon_m, at least that beyond; -half a cell at cells that
@@ -110,9 +114,10 @@ class NavigationGrid {
                    const std::vector<cv::Point>& kept_cells = {});
   // Takes every distance afresh.
   void computeDistances();
-  // Takes again the distances near cells whose class differs from `classes_before`, for which
-  // the distances held now were taken (with the same horizon).
-  void updateDistances(const cv::Mat1b& classes_before);
+  // Takes again the distances near cells whose class differs from `classes_before` (whose cells
+  // outside `resolved_before` are unknown), for which the distances held now were taken (with the
+  // same horizon).
+  void updateDistances(const cv::Mat1b& classes_before, const cv::Rect& resolved_before);
   // Cells within the distance horizon; 0 if it is infinite (or 0): then every distance is taken
   // afresh and exactly.
   int horizonCells() const;
@@ -121,6 +126,7 @@ class NavigationGrid {
   double distance_horizon_m_;
   cv::Mat1b cell_class_;
   cv::Mat1b sure_obstacle_;
+  cv::Rect resolved_cells_;
   cv::Rect free_cells_;
   cv::Mat1f clearance_m_;
   cv::Mat1f obstacle_distance_m_;

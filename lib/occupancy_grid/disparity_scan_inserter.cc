@@ -50,7 +50,7 @@ void DisparityScanInserter::clearCells(const CellSpan* begin, const CellSpan* en
   const double close_cells = update_.free_preservation_range_m / grid.resolution();
   for (const CellSpan* span = begin; span != end; ++span) {
     const int col_begin = span->col_begin, col_end = span->col_end;
-    uint8_t* row = grid.occupancyRow(span->row);
+    uint8_t* row = grid.occupancyRow(span->row, col_begin, col_end);
     for (int col = col_begin; col < col_end; ++col) {
       row[col] = static_cast<uint8_t>(std::max(row[col] - step, g_min));
     }
@@ -63,7 +63,7 @@ void DisparityScanInserter::clearCells(const CellSpan* begin, const CellSpan* en
     const int close_end =
         std::min(col_end, static_cast<int>(std::floor(camera_col + half_chord - 0.5)) + 1);
     if (close_begin < close_end) {
-      uint8_t* close_free = grid.closeFreeRow(span->row);
+      uint8_t* close_free = grid.closeFreeRow(span->row, close_begin, close_end);
       std::fill(close_free + close_begin, close_free + close_end, uint8_t{1});
     }
   }
@@ -94,9 +94,9 @@ void DisparityScanInserter::occupyCells(const CellSpan* begin, const CellSpan* e
   const bool unmark_close_free = update_.free_preservation_range_m > 0.0;
   for (const CellSpan* span = begin; span != end; ++span) {
     const int col_begin = span->col_begin, col_end = span->col_end;
-    uint8_t* occupancy = grid.occupancyRow(span->row);
-    float* tags = grid.tagRow(span->row);
-    uint8_t* close_free = grid.closeFreeRow(span->row);
+    uint8_t* occupancy = grid.occupancyRow(span->row, col_begin, col_end);
+    float* tags = grid.tagRow(span->row, col_begin, col_end);
+    uint8_t* close_free = grid.closeFreeRow(span->row, col_begin, col_end);
     if (spare_close_free) {
       for (int col = col_begin; col < col_end; ++col) {
         if (close_free[col]) continue;

@@ -46,6 +46,7 @@ void DisparityTaggedGrid::reset(const GridLimits& limits) {
   occupancy_.assign(static_cast<size_t>(width_) * height_, scale_.unknown());
   tags_.assign(occupancy_.size(), kNoTag);
   close_free_.assign(occupancy_.size(), 0);
+  written_ = {0, 0, 0, 0};
 }
 
 bool DisparityTaggedGrid::cellAt(double x, double y, int& col, int& row) const {
@@ -98,9 +99,14 @@ void DisparityTaggedGrid::growToInclude(const WorldBounds& bounds, double margin
   std::vector<uint8_t> close_free(occupancy.size(), 0);
   for (int row = 0; row < height_; ++row) {
     const size_t to = static_cast<size_t>(row + grow_down) * new_width + static_cast<size_t>(grow_left);
-    std::copy_n(occupancyRow(row), width_, occupancy.begin() + to);
-    std::copy_n(tagRow(row), width_, tags.begin() + to);
-    std::copy_n(closeFreeRow(row), width_, close_free.begin() + to);
+    const size_t from = index(0, row);
+    std::copy_n(occupancy_.begin() + from, width_, occupancy.begin() + to);
+    std::copy_n(tags_.begin() + from, width_, tags.begin() + to);
+    std::copy_n(close_free_.begin() + from, width_, close_free.begin() + to);
+  }
+  if (written_.col_begin < written_.col_end) {
+    const int right = static_cast<int>(grow_left), up = static_cast<int>(grow_down);
+    written_ = {written_.col_begin + right, written_.col_end + right, written_.row_begin + up, written_.row_end + up};
   }
   frame_.origin_x -= grow_left * r;
   frame_.origin_y -= grow_down * r;
@@ -125,6 +131,7 @@ void DisparityTaggedGrid::assign(const GridFrame& frame, int width, int height,
   occupancy_ = std::move(occupancy);
   tags_ = std::move(tags);
   close_free_ = std::move(close_free);
+  written_ = {0, width_, 0, height_};
 }
 
 }  // namespace stereonav

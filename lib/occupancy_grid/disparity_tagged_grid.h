@@ -1,5 +1,6 @@
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -40,12 +41,30 @@ class DisparityTaggedGrid {
   uint8_t occupancy(int col, int row) const { return occupancy_[index(col, row)]; }
   float disparityTag(int col, int row) const { return tags_[index(col, row)]; }
   bool closeFree(int col, int row) const { return close_free_[index(col, row)] != 0; }
-  uint8_t* occupancyRow(int row) { return &occupancy_[index(0, row)]; }
-  float* tagRow(int row) { return &tags_[index(0, row)]; }
   const uint8_t* occupancyRow(int row) const { return &occupancy_[index(0, row)]; }
   const float* tagRow(int row) const { return &tags_[index(0, row)]; }
-  uint8_t* closeFreeRow(int row) { return &close_free_[index(0, row)]; }
   const uint8_t* closeFreeRow(int row) const { return &close_free_[index(0, row)]; }
+  // Rows to write, the whole row or only columns [col_begin, col_end) of it: see writtenCells.
+  uint8_t* occupancyRow(int row) { return occupancyRow(row, 0, width_); }
+  float* tagRow(int row) { return tagRow(row, 0, width_); }
+  uint8_t* closeFreeRow(int row) { return closeFreeRow(row, 0, width_); }
+  uint8_t* occupancyRow(int row, int col_begin, int col_end) {
+    noteWritten(row, col_begin, col_end);
+    return &occupancy_[index(0, row)];
+  }
+  float* tagRow(int row, int col_begin, int col_end) {
+    noteWritten(row, col_begin, col_end);
+    return &tags_[index(0, row)];
+  }
+  uint8_t* closeFreeRow(int row, int col_begin, int col_end) {
+    noteWritten(row, col_begin, col_end);
+    return &close_free_[index(0, row)];
+  }
+  // Every cell outside these holds the initial state (unknown, untagged, not close-free): what
+  // looks for evidence need look no farther. The grid grows to far readings' bounds plus a
+  // margin, and a third of it is never written. Counted from the rows handed out to write, so
+  // it may hold cells that were written back to the initial state, or not written at all.
+  const CellWindow& writtenCells() const { return written_; }
 
   // Grows the grid by whole cells on the sides where `bounds` sticks out, by enough to cover it
   // plus `margin_m`; existing cells keep their world coordinates and values. Never shrinks, and
@@ -64,6 +83,17 @@ class DisparityTaggedGrid {
   const std::vector<uint8_t>& closeFreeLayer() const { return close_free_; }
 
  private:
+  void noteWritten(int row, int col_begin, int col_end) {
+    if (col_begin >= col_end) return;
+    if (written_.col_begin >= written_.col_end) {
+      written_ = {col_begin, col_end, row, row + 1};
+      return;
+    }
+    written_.col_begin = std::min(written_.col_begin, col_begin);
+    written_.col_end = std::max(written_.col_end, col_end);
+    written_.row_begin = std::min(written_.row_begin, row);
+    written_.row_end = std::max(written_.row_end, row + 1);
+  }
   size_t index(int col, int row) const {
     return static_cast<size_t>(row) * static_cast<size_t>(width_) + static_cast<size_t>(col);
   }
@@ -75,6 +105,7 @@ class DisparityTaggedGrid {
   std::vector<uint8_t> occupancy_;
   std::vector<float> tags_;
   std::vector<uint8_t> close_free_;
+  CellWindow written_{0, 0, 0, 0};
   int64_t max_cells_ = 0;
   bool reached_cell_limit_ = false;
 };

@@ -38,6 +38,27 @@ TEST(FrontierFinderTest, AFrontierKnowsHowMuchUnseenSpaceLiesBehindIt) {
   EXPECT_TRUE(frontiers[1].borders_unknown);
 }
 
+TEST(FrontierFinderTest, TheUnseenSpaceBehindAFrontierReachesThePartsOfTheGridTheMapNeverWrote) {
+  // A 10 x 10 cell free block in a 60 x 40 grid of 0.1 m cells; the map wrote nothing else, so
+  // its frontier (the block's border) faces every other cell.
+  const auto unseen_area = [](const TestGrid& cells) {
+    const std::vector<Frontier> frontiers = findFrontiers(NavigationGrid(cells.grid(), {}, NavigationGridOptions{}), 1);
+    EXPECT_EQ(frontiers.size(), 1u);
+    return frontiers.empty() ? 0.0 : frontiers[0].unseen_area_m2;
+  };
+  TestGrid alone(60, 40);
+  alone.free(20, 10, 29, 19);
+  EXPECT_NEAR(unseen_area(alone), (60 * 40 - 100) * 0.01, 1e-9);
+  // A wall across the whole grid at row 25 cuts off the 14 rows above it.
+  TestGrid wall_across(60, 40);
+  wall_across.free(20, 10, 29, 19).occupied(0, 25, 59, 25);
+  EXPECT_NEAR(unseen_area(wall_across), (60 * 25 - 100) * 0.01, 1e-9);
+  // A wall up the whole grid at column 45 cuts off the 14 columns right of it.
+  TestGrid wall_up(60, 40);
+  wall_up.free(20, 10, 29, 19).occupied(45, 0, 45, 39);
+  EXPECT_NEAR(unseen_area(wall_up), (45 * 40 - 100) * 0.01, 1e-9);
+}
+
 TEST(FrontierFinderTest, CellsBesideAnObstacleAreNotFrontier) {
   TestGrid cells(20, 20);
   cells.free(5, 5, 9, 9).occupied(10, 4, 10, 10);

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 
 #include "occupancy_grid/disparity_tagged_grid.h"
@@ -19,7 +20,8 @@ class TestGrid {
   // Cells col0..col1, row0..row1 inclusive.
   TestGrid& fill(int col0, int row0, int col1, int row1, uint8_t g) {
     for (int row = row0; row <= row1; ++row) {
-      for (int col = col0; col <= col1; ++col) grid_.occupancyRow(row)[col] = g;
+      uint8_t* cells = grid_.occupancyRow(row, col0, col1 + 1);
+      std::fill(cells + col0, cells + col1 + 1, g);
     }
     return *this;
   }
@@ -32,7 +34,8 @@ class TestGrid {
   // Disparity tags (the reading that last added OCC evidence).
   TestGrid& tag(int col0, int row0, int col1, int row1, float disparity) {
     for (int row = row0; row <= row1; ++row) {
-      for (int col = col0; col <= col1; ++col) grid_.tagRow(row)[col] = disparity;
+      float* tags = grid_.tagRow(row, col0, col1 + 1);
+      std::fill(tags + col0, tags + col1 + 1, disparity);
     }
     return *this;
   }

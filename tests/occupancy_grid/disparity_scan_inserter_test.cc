@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "test_scans.h"
 
 namespace stereonav {
@@ -40,6 +42,31 @@ TEST(DisparityScanInserterTest, OneReadingAddsKOverOccAndSubtractsKOverClear) {
   EXPECT_EQ(occupancyAt(f.grid, 1, 1), 128);
   EXPECT_EQ(occupancyAt(f.grid, 4, 0), 128);
   EXPECT_EQ(occupancyAt(f.grid, -1, 0), 128);
+}
+
+TEST(DisparityScanInserterTest, TheGridsWrittenCellsAreTheBoxOfEveryCellAScanChanged) {
+  Fixture f;
+  f.insert(1.5f, robotAt(0, 0));
+  f.insert(1.5f, robotAt(-3, 4));
+  const DisparityTaggedGrid& grid = f.grid;
+  int first_col = grid.width(), last_col = -1, first_row = grid.height(), last_row = -1;
+  for (int row = 0; row < grid.height(); ++row) {
+    for (int col = 0; col < grid.width(); ++col) {
+      const bool changed = grid.occupancy(col, row) != grid.scale().unknown() ||
+                           grid.disparityTag(col, row) != DisparityTaggedGrid::kNoTag || grid.closeFree(col, row);
+      if (!changed) continue;
+      first_col = std::min(first_col, col);
+      last_col = std::max(last_col, col);
+      first_row = std::min(first_row, row);
+      last_row = std::max(last_row, row);
+    }
+  }
+  ASSERT_GE(last_col, 0);
+  const CellWindow& written = grid.writtenCells();
+  EXPECT_EQ(written.col_begin, first_col);
+  EXPECT_EQ(written.col_end, last_col + 1);
+  EXPECT_EQ(written.row_begin, first_row);
+  EXPECT_EQ(written.row_end, last_row + 1);
 }
 
 TEST(DisparityScanInserterTest, UpdatesClipAtGminAndGmaxAndCrossTheThresholds) {

@@ -36,6 +36,31 @@ TEST(DisparityTaggedGridTest, StartsUnknownAndUntaggedOnTheResolutionLattice) {
   EXPECT_FALSE(grid.cellAt(1.0, 0.0, col, row));
 }
 
+TEST(DisparityTaggedGridTest, TheWrittenCellsFollowTheRowsHandedOutAndTheGridsGrowthAndReset) {
+  DisparityTaggedGrid grid(limits(-1, 1, -1, 1, 0.5), OccupancyScale{});  // 4 x 4 cells
+  const CellWindow& written = grid.writtenCells();
+  EXPECT_GE(written.col_begin, written.col_end);  // nothing yet
+  grid.occupancyRow(1, 2, 3)[2] = 200;
+  grid.tagRow(2, 1, 2)[1] = 7.0f;
+  EXPECT_EQ(written.col_begin, 1);
+  EXPECT_EQ(written.col_end, 3);
+  EXPECT_EQ(written.row_begin, 1);
+  EXPECT_EQ(written.row_end, 3);
+  // 3 cells more on the left and 2 below: the same cells, moved.
+  grid.growToInclude({-2.5, 1.0, -2.0, 1.0}, 0.0);
+  EXPECT_EQ(written.col_begin, 4);
+  EXPECT_EQ(written.col_end, 6);
+  EXPECT_EQ(written.row_begin, 3);
+  EXPECT_EQ(written.row_end, 5);
+  // A row handed out without columns counts whole.
+  grid.closeFreeRow(0);
+  EXPECT_EQ(written.col_begin, 0);
+  EXPECT_EQ(written.col_end, grid.width());
+  EXPECT_EQ(written.row_begin, 0);
+  grid.reset(limits(-1, 1, -1, 1, 0.5));
+  EXPECT_GE(written.col_begin, written.col_end);
+}
+
 TEST(DisparityTaggedGridTest, GrowsByWholeCellsKeepingCellsAtTheirWorldCoordinates) {
   DisparityTaggedGrid grid(limits(-1, 1, -1, 1, 0.5), OccupancyScale{});
   int col = 0, row = 0;
