@@ -44,15 +44,26 @@ OpeningRegions openingRegions(const NavigationGrid& grid) {
   cv::dilate(classes == NavigationGrid::kOccupied, beside_obstacle, cv::Mat());
   regions.areas.assign(static_cast<size_t>(count), 0);
   std::vector<uint8_t> thin(static_cast<size_t>(count), 1), touches_obstacle(static_cast<size_t>(count), 0);
+  // Run by run of one label: a count per cell would wait on the store before it (the same
+  // label's count, cell after cell), and each flag is looked for only until it is found.
+  int* areas = regions.areas.data();
   for (int row = 0; row < classes.rows; ++row) {
     const int* label_row = regions.labels[row];
     const uint8_t* interior_row = interior[row];
     const uint8_t* beside_row = beside_obstacle[row];
-    for (int col = 0; col < classes.cols; ++col) {
+    for (int col = 0; col < classes.cols;) {
       const int label = label_row[col];
-      ++regions.areas[label];
-      if (interior_row[col]) thin[label] = 0;
-      if (beside_row[col]) touches_obstacle[label] = 1;
+      int end = col + 1;
+      while (end < classes.cols && label_row[end] == label) ++end;
+      areas[label] += end - col;
+      if (label != 0 && thin[label] && std::any_of(interior_row + col, interior_row + end, [](uint8_t cell) { return cell != 0; })) {
+        thin[label] = 0;
+      }
+      if (label != 0 && !touches_obstacle[label] &&
+          std::any_of(beside_row + col, beside_row + end, [](uint8_t cell) { return cell != 0; })) {
+        touches_obstacle[label] = 1;
+      }
+      col = end;
     }
   }
   // The cells beyond the window: the columns left and right of it at every row, and the rows

@@ -40,8 +40,12 @@ NavigationGrid::NavigationGrid(const DisparityTaggedGrid& grid, const std::vecto
                                const std::vector<cv::Point2d>& seen_free, std::unique_ptr<NavigationGrid> previous)
     : frame_(grid.frame()),
       distance_horizon_m_(options.distance_horizon_m),
+      body_radius_m_(options.body_radius_m),
       cell_class_(grid.height(), grid.width()),
       sure_obstacle_(grid.height(), grid.width()) {
+  const bool same_cells = previous != nullptr && previous->cell_class_.size() == cell_class_.size() &&
+                          previous->frame_.origin_x == frame_.origin_x && previous->frame_.origin_y == frame_.origin_y &&
+                          previous->frame_.resolution == frame_.resolution;
   // Per occupancy value: its class, and whether it is a sure obstacle.
   const OccupancyScale& scale = grid.scale();
   std::array<uint8_t, 256> class_of{}, sure_of{};
@@ -70,36 +74,56 @@ NavigationGrid::NavigationGrid(const DisparityTaggedGrid& grid, const std::vecto
   }
   resolved_cells_ = cv::Rect(written.col_begin, written.row_begin, written.col_end - written.col_begin,
                              written.row_end - written.row_begin);
-  const auto stamped = [this](int col, int row) { resolved_cells_ |= cv::Rect(col, row, 1, 1); };
-  for (const cv::Point2d& point : seen_free) {
-    int col = 0, row = 0;
-    if (cellAt(point.x, point.y, col, row) && cell_class_(row, col) != kOccupied) {
-      cell_class_(row, col) = kFree;
-      stamped(col, row);
-    }
+  // The cells seen free and under the body that the previous grid drew are kept; only the points
+  // added since are drawn.
+  if (same_cells && previous->body_radius_m_ == body_radius_m_ && previous->seen_free_points_ <= seen_free.size() &&
+      previous->body_positions_ <= visited.size()) {
+    stamps_ = std::move(previous->stamps_);
+    stamps_box_ = previous->stamps_box_;
+    seen_free_points_ = previous->seen_free_points_;
+    body_positions_ = previous->body_positions_;
+  } else {
+    stamps_ = cv::Mat1b::zeros(cell_class_.size());
   }
-  const double body_radius_m = options.body_radius_m;
-  const int reach = static_cast<int>(std::ceil(body_radius_m / frame_.resolution));
-  for (const mrpt::poses::CPose2D& pose : visited) {
+  for (; seen_free_points_ < seen_free.size(); ++seen_free_points_) {
+    const cv::Point2d& point = seen_free[seen_free_points_];
+    int col = 0, row = 0;
+    if (!cellAt(point.x, point.y, col, row)) continue;
+    stamps_(row, col) |= kSeenFreeStamp;
+    stamps_box_ |= cv::Rect(col, row, 1, 1);
+  }
+  const int reach = static_cast<int>(std::ceil(body_radius_m_ / frame_.resolution));
+  for (; body_positions_ < visited.size(); ++body_positions_) {
+    const mrpt::poses::CPose2D& pose = visited[body_positions_];
     int centre_col = 0, centre_row = 0;
     if (!cellAt(pose.x(), pose.y(), centre_col, centre_row)) continue;
     const int first_col = std::max(0, centre_col - reach), last_col = std::min(width() - 1, centre_col + reach);
     const int first_row = std::max(0, centre_row - reach), last_row = std::min(height() - 1, centre_row + reach);
     for (int row = first_row; row <= last_row; ++row) {
-      uint8_t* classes = cell_class_[row];
+      uint8_t* stamps = stamps_[row];
       for (int col = first_col; col <= last_col; ++col) {
-        if (classes[col] != kUnknown) continue;
-        if (std::hypot(centreX(col) - pose.x(), centreY(row) - pose.y()) <= body_radius_m) classes[col] = kFree;
+        if (std::hypot(centreX(col) - pose.x(), centreY(row) - pose.y()) <= body_radius_m_) stamps[col] |= kBodyStamp;
       }
     }
-    stamped(first_col, first_row);
-    stamped(last_col, last_row);
+    stamps_box_ |= cv::Rect(first_col, first_row, last_col - first_col + 1, last_row - first_row + 1);
   }
+  // Seen free unless the map holds a precise obstacle; then free under the body if unknown.
+  for (int row = stamps_box_.y; row < stamps_box_.y + stamps_box_.height; ++row) {
+    const uint8_t* stamps = stamps_[row];
+    uint8_t* classes = cell_class_[row];
+    for (int col = stamps_box_.x; col < stamps_box_.x + stamps_box_.width; ++col) {
+      uint8_t cell_class = classes[col];
+      cell_class = (stamps[col] & kSeenFreeStamp) != 0 && cell_class != kOccupied ? kFree : cell_class;
+      cell_class = (stamps[col] & kBodyStamp) != 0 && cell_class == kUnknown ? kFree : cell_class;
+      classes[col] = cell_class;
+    }
+  }
+  resolved_cells_ |= stamps_box_;
   for (const cv::Point2d& contact : contacts) {
     int col = 0, row = 0;
     if (cellAt(contact.x, contact.y, col, row)) {
       cell_class_(row, col) = kOccupied;
-      stamped(col, row);
+      resolved_cells_ |= cv::Rect(col, row, 1, 1);
     }
   }
   if (!resolved_cells_.empty()) {
@@ -107,11 +131,7 @@ NavigationGrid::NavigationGrid(const DisparityTaggedGrid& grid, const std::vecto
     if (!free_cells.empty()) free_cells_ = free_cells + resolved_cells_.tl();
   }
   if (options.max_hole_cells > 0) freeIslands(kUnknown, kUnknown, 4, options.max_hole_cells);
-  const bool same_cells = previous != nullptr && previous->cell_class_.size() == cell_class_.size() &&
-                          previous->frame_.origin_x == frame_.origin_x && previous->frame_.origin_y == frame_.origin_y &&
-                          previous->frame_.resolution == frame_.resolution &&
-                          previous->distance_horizon_m_ == distance_horizon_m_;
-  if (same_cells && horizonCells() > 0) {
+  if (same_cells && previous->distance_horizon_m_ == distance_horizon_m_ && horizonCells() > 0) {
     clearance_m_ = std::move(previous->clearance_m_);
     obstacle_distance_m_ = std::move(previous->obstacle_distance_m_);
     updateDistances(previous->cell_class_, previous->resolved_cells_);
@@ -184,7 +204,14 @@ void NavigationGrid::freeIslands(uint8_t lowest_class, uint8_t highest_class, in
   std::vector<int> areas(static_cast<size_t>(count), 0);
   for (int row = 0; row < box.height; ++row) {
     const int* label_row = labels[row];
-    for (int col = 0; col < box.width; ++col) ++areas[label_row[col]];
+    // Run by run of one label: a count per cell would wait on the store before it.
+    for (int col = 0; col < box.width;) {
+      const int label = label_row[col];
+      int end = col + 1;
+      while (end < box.width && label_row[end] == label) ++end;
+      areas[label] += end - col;
+      col = end;
+    }
   }
   std::vector<uint8_t> frees(static_cast<size_t>(count), 0);
   for (int label = 1; label < count; ++label) frees[label] = areas[label] <= max_cells;

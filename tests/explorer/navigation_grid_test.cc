@@ -181,6 +181,39 @@ TEST(NavigationGridTest, AGridMadeAfterAnotherTakesAgainOnlyWhatChangedAndHoldsT
   EXPECT_GE(specks_freed.obstacleDistance(41, 30), 0.5f);
 }
 
+TEST(NavigationGridTest, AGridMadeAfterAnotherAddsTheNewPositionsAndSeenCellsToWhatItTookOver) {
+  // 0.1 m cells, all unknown but an obstacle at (20, 20); the robot stood at (1, 1), then also
+  // at (2, 2), beside the obstacle; it saw (0.45, 0.55) free, then also (2.55, 0.55).
+  TestGrid cells(30, 30);
+  cells.occupied(20, 20, 20, 20);
+  NavigationGridOptions options;
+  options.body_radius_m = 0.25;
+  const std::vector<mrpt::poses::CPose2D> stood_before = {mrpt::poses::CPose2D(1.0, 1.0, 0.0)};
+  const std::vector<mrpt::poses::CPose2D> stood = {mrpt::poses::CPose2D(1.0, 1.0, 0.0), mrpt::poses::CPose2D(2.0, 2.0, 0.0)};
+  const std::vector<cv::Point2d> seen_before = {{0.45, 0.55}};
+  const std::vector<cv::Point2d> seen = {{0.45, 0.55}, {2.55, 0.55}};
+  const NavigationGrid updated(cells.grid(), stood, options, {}, seen,
+                               std::make_unique<NavigationGrid>(cells.grid(), stood_before, options, std::vector<cv::Point2d>{},
+                                                                seen_before));
+  // A previous grid of other cells (before the map grew) is drawn afresh.
+  TestGrid smaller(20, 20);
+  const NavigationGrid regrown(cells.grid(), stood, options, {}, seen,
+                               std::make_unique<NavigationGrid>(smaller.grid(), stood_before, options, std::vector<cv::Point2d>{},
+                                                                seen_before));
+  for (const NavigationGrid* grid : {&updated, &regrown}) {
+    EXPECT_EQ(grid->cellClass(9, 9), NavigationGrid::kFree);     // under the body at (1, 1)
+    EXPECT_EQ(grid->cellClass(19, 19), NavigationGrid::kFree);   // under the body at (2, 2)
+    EXPECT_EQ(grid->cellClass(20, 20), NavigationGrid::kOccupied);
+    EXPECT_EQ(grid->cellClass(17, 19), NavigationGrid::kUnknown);  // (1.75, 1.95): 0.255 m away
+    EXPECT_EQ(grid->cellClass(4, 5), NavigationGrid::kFree);
+    EXPECT_EQ(grid->cellClass(25, 5), NavigationGrid::kFree);
+    EXPECT_EQ(grid->cellClass(24, 5), NavigationGrid::kUnknown);
+  }
+  const NavigationGrid fresh(cells.grid(), stood, options, {}, seen);
+  EXPECT_EQ(cv::countNonZero(updated.cellClasses() != fresh.cellClasses()), 0);
+  EXPECT_EQ(cv::countNonZero(regrown.cellClasses() != fresh.cellClasses()), 0);
+}
+
 TEST(NavigationGridTest, SmallUnknownIslandsInsideFreeSpaceAreFreeButNotThoseTouchingObstacles) {
   TestGrid cells(20, 20);
   cells.free(0, 0, 19, 19).unknown(5, 5, 6, 6).unknown(10, 5, 12, 6).unknown(15, 5, 15, 5).occupied(16, 5, 16, 5);
