@@ -56,13 +56,11 @@ OpeningRegions openingRegions(const NavigationGrid& grid) {
       int end = col + 1;
       while (end < classes.cols && label_row[end] == label) ++end;
       areas[label] += end - col;
-      if (label != 0 && thin[label] && std::any_of(interior_row + col, interior_row + end, [](uint8_t cell) { return cell != 0; })) {
-        thin[label] = 0;
-      }
-      if (label != 0 && !touches_obstacle[label] &&
-          std::any_of(beside_row + col, beside_row + end, [](uint8_t cell) { return cell != 0; })) {
-        touches_obstacle[label] = 1;
-      }
+      const auto any_set = [&](const uint8_t* cells) {
+        return std::any_of(cells + col, cells + end, [](uint8_t cell) { return cell != 0; });
+      };
+      if (label != 0 && thin[label] && any_set(interior_row)) thin[label] = 0;
+      if (label != 0 && !touches_obstacle[label] && any_set(beside_row)) touches_obstacle[label] = 1;
       col = end;
     }
   }

@@ -129,7 +129,7 @@ class NavigationGrid {
   // Per cell, whether one of the first seen_free_points_ seen-free points lies in it and whether
   // the body's disc at one of the first body_positions_ visited positions covers it, within
   // stamps_box_. Both lists only grow, by a few points a frame; drawing them all every frame
-  // took a tenth of the explorer's time after half an hour.
+  // took a quarter of the grid's own time after half an hour.
   static constexpr uint8_t kSeenFreeStamp = 1;
   static constexpr uint8_t kBodyStamp = 2;
   cv::Mat1b stamps_;
