@@ -1,8 +1,10 @@
 #include "explorer/goal_selection.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace stereonav {
 
@@ -57,40 +59,91 @@ std::vector<GoalCell> GoalSelection::goals(const NavigationGrid& grid, const Cos
     }
     if (run.half_width >= 0) disc.push_back(std::move(run));
   }
-  // Per cell of the free cells' box, where every traversable cell lies, the cheapest seed and its
-  // frontier: goals of overlapping frontiers are not repeated.
+  // Without a distance cost a frontier's discs all stamp its seed cost, and a cell the disc of the
+  // frontier's cell before covered holds that cost or less already: a cell next to the one before
+  // stamps only the part of its disc the other's missed. Frontier cells come row by row, so this
+  // is mostly one cell at each end of the disc's rows instead of the whole disc.
+  const bool flat = distance_cost == 0.0;
+  const auto halfWidth = [&](int dr) {
+    for (const Run& run : disc) {
+      if (run.dr == dr) return run.half_width;
+    }
+    return -1;
+  };
+  struct Piece {
+    int dr, first_dc, last_dc;
+  };
+  // By the step (dx, dy) from the cell before, at [(dy + 1) * 3 + dx + 1]: the disc's cells that
+  // the disc one step back does not hold.
+  std::array<std::vector<Piece>, 9> crescents;
+  for (int dy = -1; dy <= 1; ++dy) {
+    for (int dx = -1; dx <= 1; ++dx) {
+      std::vector<Piece>& pieces = crescents[static_cast<size_t>((dy + 1) * 3 + dx + 1)];
+      for (const Run& run : disc) {
+        const int behind = halfWidth(run.dr + dy);
+        if (behind < 0) {
+          pieces.push_back({run.dr, -run.half_width, run.half_width});
+          continue;
+        }
+        const int held_first = -behind - dx, held_last = behind - dx;
+        if (-run.half_width < held_first) pieces.push_back({run.dr, -run.half_width, std::min(run.half_width, held_first - 1)});
+        if (run.half_width > held_last) pieces.push_back({run.dr, std::max(-run.half_width, held_last + 1), run.half_width});
+      }
+    }
+  }
+  // Per cell within reach of a frontier, inside the free cells' box where every traversable cell
+  // lies, the cheapest seed and its frontier: goals of overlapping frontiers are not repeated.
   const cv::Rect& box = field.box();
-  const cv::Mat1b& traversable = field.traversableCells();
-  cv::Mat1d seed(box.size(), std::numeric_limits<double>::infinity());
-  cv::Mat1i label(box.size(), -1);
+  cv::Rect reached;
+  for (const Frontier& frontier : frontiers) {
+    for (const cv::Point& cell : frontier.cells) reached |= cv::Rect(cell.x - reach, cell.y - reach, 2 * reach + 1, 2 * reach + 1);
+  }
+  reached &= box;
+  if (reached.empty()) return {};
+  const cv::Mat1b traversable = field.traversableCells()(reached - box.tl());
+  cv::Mat1d seed(reached.size(), std::numeric_limits<double>::infinity());
+  cv::Mat1i label(reached.size(), -1);
+  const auto stamp = [&](const cv::Point& cell, int dr, int first_dc, int last_dc, double seed_cost,
+                         const double* costs, int frontier) {
+    const int r = cell.y + dr - reached.y;
+    if (r < 0 || r >= reached.height) return;
+    const int first = cell.x + first_dc - reached.x;
+    const int begin = std::max(0, first), end = std::min(reached.width, cell.x + last_dc + 1 - reached.x);
+    const uint8_t* traversable_row = traversable[r];
+    double* seed_row = seed[r];
+    int* label_row = label[r];
+    for (int c = begin; c < end; ++c) {
+      if (!traversable_row[c]) continue;
+      const double cost = seed_cost + costs[c - first];
+      if (cost < seed_row[c]) {
+        seed_row[c] = cost;
+        label_row[c] = frontier;
+      }
+    }
+  };
+  const std::vector<double> no_costs(static_cast<size_t>(2 * reach + 1), 0.0);
   for (size_t i = 0; i < frontiers.size(); ++i) {
     const bool waits = frontiers[i].unseen_area_m2 < options_.pocket_area_m2 || !frontiers[i].borders_unknown;
     const double seed_cost = (isTarget(grid, frontiers[i], goal_radius, memory) ? 0.0 : options_.target_switch_penalty_m) +
                              (waits ? options_.pocket_penalty_m : 0.0);
+    const int index = static_cast<int>(i);
+    std::optional<cv::Point> before;
     for (const cv::Point& cell : frontiers[i].cells) {
-      for (const Run& run : disc) {
-        const int r = cell.y + run.dr - box.y;
-        if (r < 0 || r >= box.height) continue;
-        const int first = cell.x - run.half_width - box.x;
-        const int begin = std::max(0, first), end = std::min(box.width, cell.x + run.half_width + 1 - box.x);
-        const uint8_t* traversable_row = traversable[r];
-        double* seed_row = seed[r];
-        int* label_row = label[r];
-        for (int c = begin; c < end; ++c) {
-          if (!traversable_row[c]) continue;
-          const double cost = seed_cost + run.costs[static_cast<size_t>(c - first)];
-          if (cost < seed_row[c]) {
-            seed_row[c] = cost;
-            label_row[c] = static_cast<int>(i);
-          }
+      const cv::Point step = before ? cell - *before : cv::Point(2, 2);
+      before = cell;
+      if (flat && std::abs(step.x) <= 1 && std::abs(step.y) <= 1) {
+        for (const Piece& piece : crescents[static_cast<size_t>((step.y + 1) * 3 + step.x + 1)]) {
+          stamp(cell, piece.dr, piece.first_dc, piece.last_dc, seed_cost, no_costs.data(), index);
         }
+        continue;
       }
+      for (const Run& run : disc) stamp(cell, run.dr, -run.half_width, run.half_width, seed_cost, run.costs.data(), index);
     }
   }
   std::vector<GoalCell> goals;
-  for (int row = 0; row < box.height; ++row) {
-    for (int col = 0; col < box.width; ++col) {
-      if (label(row, col) >= 0) goals.push_back({box.x + col, box.y + row, seed(row, col), label(row, col)});
+  for (int row = 0; row < reached.height; ++row) {
+    for (int col = 0; col < reached.width; ++col) {
+      if (label(row, col) >= 0) goals.push_back({reached.x + col, reached.y + row, seed(row, col), label(row, col)});
     }
   }
   return goals;

@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <map>
+#include <set>
+
 #include "test_grids.h"
 
 namespace stereonav {
@@ -85,6 +88,69 @@ TEST(GoalSelectionTest, TheTargetCarriesOverToTheFrontierHoldingItsCellsInTheNex
   EXPECT_EQ(corridor.chosen(selection, 7.55), "east");
   selection.carryTargetOver(*corridor.grid, corridor.frontiers, corridor.memory);
   EXPECT_EQ(corridor.chosen(selection, 7.55), "west");
+}
+
+
+TEST(GoalSelectionTest, TheGoalsAreTheTraversableCellsWithinReachOfAFrontierWhateverTheOrderOfItsCells) {
+  // A free room 6 m x 4 m with a pillar in it, 5 cm cells.
+  TestGrid cells(140, 100, 0.05);
+  cells.free(10, 10, 129, 89).occupied(60, 40, 69, 49);
+  const NavigationGrid grid(cells.grid(), std::vector<mrpt::poses::CPose2D>{}, NavigationGridOptions{});
+  CostToGoOptions planner;
+  planner.body_radius_m = 0.35;
+  const CostToGoField field(grid, planner);
+  FrontierMemory memory{ExplorerOptions{}};
+  memory.anchor(cells.grid().frame());
+  // Frontiers drawn by hand, their cells in the orders a finder may give: a winding curve cell
+  // by cell (straight and diagonal steps), the same curve backwards with a jump in it, and a
+  // scatter overlapping both. The third borders only a pocket, so its goals cost more.
+  std::vector<cv::Point> curve;
+  for (int col = 20; col <= 50; ++col) curve.emplace_back(col, 30 + (col % 12 < 6 ? col % 12 : 12 - col % 12));
+  for (int row = 31; row <= 60; ++row) curve.emplace_back(50 + (row % 3 == 0 ? 1 : 0), row);
+  std::vector<cv::Point> backwards(curve.rbegin(), curve.rend());
+  for (cv::Point& cell : backwards) cell += cv::Point(45, 5);
+  std::swap(backwards[10], backwards[40]);
+  const std::vector<cv::Point> scatter{{48, 33}, {90, 70}, {52, 62}, {30, 75}, {91, 71}, {89, 69}};
+  std::vector<Frontier> frontiers(3);
+  frontiers[0].cells = curve;
+  frontiers[1].cells = backwards;
+  frontiers[2].cells = scatter;
+  for (Frontier& frontier : frontiers) {
+    frontier.unseen_area_m2 = 100.0;
+    frontier.borders_unknown = true;
+  }
+  frontiers[2].unseen_area_m2 = 0.5;
+  const ExplorerOptions explorer;
+  const GoalSelection selection(explorer);
+  const std::vector<GoalCell> goals = selection.goals(grid, field, frontiers, planner.body_radius_m, memory);
+
+  // Each traversable cell within goal_distance_m of the body's edge from some frontier cell (its
+  // centre within 0.55 m, 11 cells, of that cell's) is a goal once, with the cheapest frontier's
+  // seed: the switch penalty, and the pocket penalty on top for the pocket's; among frontiers of
+  // one seed the first.
+  const double reach_cells = (planner.body_radius_m + explorer.goal_distance_m) / 0.05;
+  std::map<std::pair<int, int>, std::pair<double, int>> expected;
+  for (int i = 0; i < 3; ++i) {
+    const double seed = explorer.target_switch_penalty_m + (i == 2 ? explorer.pocket_penalty_m : 0.0);
+    for (const cv::Point& cell : frontiers[static_cast<size_t>(i)].cells) {
+      for (int row = 0; row < 100; ++row) {
+        for (int col = 0; col < 140; ++col) {
+          if (std::hypot(col - cell.x, row - cell.y) > reach_cells + 1e-9 || !field.traversable(col, row)) continue;
+          const auto [it, inserted] = expected.try_emplace({col, row}, seed, i);
+          if (!inserted && seed < it->second.first) it->second = {seed, i};
+        }
+      }
+    }
+  }
+  ASSERT_EQ(goals.size(), expected.size());
+  std::set<std::pair<int, int>> seen;
+  for (const GoalCell& goal : goals) {
+    const auto it = expected.find({goal.col, goal.row});
+    ASSERT_NE(it, expected.end()) << goal.col << " " << goal.row;
+    EXPECT_TRUE(seen.insert({goal.col, goal.row}).second);
+    EXPECT_EQ(goal.seed_cost, it->second.first) << goal.col << " " << goal.row;
+    EXPECT_EQ(goal.label, it->second.second) << goal.col << " " << goal.row;
+  }
 }
 
 }  // namespace
