@@ -15,15 +15,26 @@ CostToGoField::CostToGoField(const NavigationGrid& grid, const CostToGoOptions& 
       traversable_(box_.size(), uint8_t{0}),
       step_weight_(box_.size(), 1.0f) {
   if (!(min_weight_ > 0.0)) throw std::invalid_argument("cost-to-go: repulsion_weight must be above -1");
+  if (box_.empty()) return;
+  // NavigationGrid::fits and the weight, row by row without branches: the loop runs over every
+  // free cell's box for every plan.
+  const cv::Mat1f clearances = grid.clearances()(box_), distances = grid.obstacleDistances()(box_);
+  const double body_radius = options.body_radius_m;
+  const double repulsion_distance = options.repulsion_distance_m, repulsion_weight = options.repulsion_weight;
+  const bool repelled = repulsion_distance > 0.0;
   for (int row = 0; row < box_.height; ++row) {
+    const float* clearance = clearances[row];
+    const float* distance = distances[row];
+    uint8_t* traversable = traversable_[row];
+    float* weight = step_weight_[row];
     for (int col = 0; col < box_.width; ++col) {
-      const int grid_col = box_.x + col, grid_row = box_.y + row;
-      traversable_(row, col) = grid.fits(grid_col, grid_row, options.body_radius_m) ? 1 : 0;
+      const bool fits = clearance[col] + 1e-6 >= body_radius;
+      traversable[col] = fits ? 1 : 0;
       // Steps are taken between traversable cells only.
-      if (!traversable_(row, col) || options.repulsion_distance_m <= 0.0) continue;
-      const double beyond = grid.obstacleDistance(grid_col, grid_row) - options.body_radius_m;
-      const double s = std::max(0.0, 1.0 - beyond / options.repulsion_distance_m);
-      step_weight_(row, col) = static_cast<float>(1.0 + options.repulsion_weight * std::min(1.0, s) * std::min(1.0, s));
+      const double beyond = distance[col] - body_radius;
+      const double s = std::min(1.0, std::max(0.0, 1.0 - beyond / repulsion_distance));
+      const float repelling = static_cast<float>(1.0 + repulsion_weight * s * s);
+      weight[col] = fits && repelled ? repelling : 1.0f;
     }
   }
 }

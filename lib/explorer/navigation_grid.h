@@ -106,6 +106,9 @@ class NavigationGrid {
   // free cells it is exact up to the options' distance_horizon_m and at least that beyond; at
   // occupied and imprecise cells it is -half a cell.
   float obstacleDistance(int col, int row) const { return obstacle_distance_m_(row, col); }
+  // Every cell's clearance and obstacleDistance, for loops over many cells.
+  const cv::Mat1f& clearances() const { return clearance_m_; }
+  const cv::Mat1f& obstacleDistances() const { return obstacle_distance_m_; }
 
  private:
   // Islands of cells whose class is from `lowest_class` to `highest_class` (`connectivity` 4 or
