@@ -40,9 +40,9 @@ void NearObstacleMemory::update(const std::vector<mrpt::math::TPoint2D>& sensed,
     ++count[bin];
   }
 
-  const auto seenPast = [&](const Cell& cell) {
+  const auto seenPast = [&](const mrpt::math::TPoint2D& point) {
     double x = 0.0, y = 0.0;
-    pose.inverseComposePoint(cell.point.x, cell.point.y, x, y);
+    pose.inverseComposePoint(point.x, point.y, x, y);
     const double range = std::hypot(x, y);
     if (range < options_.judge_beyond_m || range > options_.remember_within_m) return false;
     // The bin of the point and its neighbours on both sides: the window around its bearing.
@@ -58,10 +58,10 @@ void NearObstacleMemory::update(const std::vector<mrpt::math::TPoint2D>& sensed,
   };
   // Only points within remember_within_m are judged: the cells around the robot, not the whole
   // memory, which grows with the building.
-  for (Cells* cells : {&remembered_, &candidates_}) {
-    walkCellsNear(*cells, options_.cell_m, pose.x(), pose.y(), options_.remember_within_m,
-                  [&](auto it) { return seenPast(it->second) ? cells->erase(it) : std::next(it); });
-  }
+  walkCellsNear(remembered_, options_.cell_m, pose.x(), pose.y(), options_.remember_within_m,
+                [&](auto it) { return seenPast(points_[it->second]) ? forget(it) : std::next(it); });
+  walkCellsNear(candidates_, options_.cell_m, pose.x(), pose.y(), options_.remember_within_m,
+                [&](auto it) { return seenPast(it->second.point) ? candidates_.erase(it) : std::next(it); });
 
   for (const mrpt::math::TPoint2D& point : sensed) {
     if (std::hypot(point.x, point.y) > options_.remember_within_m) continue;
@@ -69,43 +69,68 @@ void NearObstacleMemory::update(const std::vector<mrpt::math::TPoint2D>& sensed,
     pose.composePoint(point.x, point.y, x, y);
     if (!confirmed(x, y)) continue;
     const mrpt::math::TPoint2D view(pose.x(), pose.y());
-    const std::pair<long, long> key = keyOf(x, y);
+    const Key key = keyOf(x, y);
     if (const auto known = remembered_.find(key); known != remembered_.end()) {
-      known->second.point = mrpt::math::TPoint2D(x, y);
+      points_[known->second] = mrpt::math::TPoint2D(x, y);
       continue;
     }
-    const auto [it, inserted] = candidates_.try_emplace(key, Cell{mrpt::math::TPoint2D(x, y), view});
+    const auto [it, inserted] = candidates_.try_emplace(key, Candidate{mrpt::math::TPoint2D(x, y), view});
     if (inserted) continue;
     it->second.point = mrpt::math::TPoint2D(x, y);
     if (std::hypot(view.x - it->second.first_view.x, view.y - it->second.first_view.y) >= options_.distinct_views_m) {
-      remembered_.insert(candidates_.extract(it));
+      rememberCell(key, it->second.point);
+      candidates_.erase(it);
     }
   }
 }
 
 void NearObstacleMemory::remember(const std::vector<mrpt::math::TPoint2D>& points) {
   for (const mrpt::math::TPoint2D& point : points) {
-    const std::pair<long, long> key = keyOf(point.x, point.y);
+    const Key key = keyOf(point.x, point.y);
     candidates_.erase(key);
-    remembered_[key] = Cell{point, point};
+    rememberCell(key, point);
   }
 }
 
-std::pair<long, long> NearObstacleMemory::keyOf(double x, double y) const {
+void NearObstacleMemory::rememberCell(const Key& key, const mrpt::math::TPoint2D& point) {
+  const auto [it, inserted] = remembered_.try_emplace(key, points_.size());
+  if (inserted) {
+    points_.push_back(point);
+    keys_.push_back(key);
+    return;
+  }
+  points_[it->second] = point;
+}
+
+std::map<NearObstacleMemory::Key, size_t>::iterator NearObstacleMemory::forget(std::map<Key, size_t>::iterator it) {
+  const size_t slot = it->second;
+  if (slot + 1 != points_.size()) {
+    points_[slot] = points_.back();
+    keys_[slot] = keys_.back();
+    remembered_.find(keys_[slot])->second = slot;
+  }
+  points_.pop_back();
+  keys_.pop_back();
+  return remembered_.erase(it);
+}
+
+NearObstacleMemory::Key NearObstacleMemory::keyOf(double x, double y) const {
   return {std::lround(x / options_.cell_m), std::lround(y / options_.cell_m)};
 }
 
 size_t NearObstacleMemory::forgetUnconfirmed(const std::function<bool(double x, double y)>& confirmed) {
   size_t forgotten = 0;
-  for (Cells* cells : {&remembered_, &candidates_}) {
-    for (auto it = cells->begin(); it != cells->end();) {
-      if (confirmed(it->second.point.x, it->second.point.y)) {
-        ++it;
-        continue;
-      }
-      forgotten += cells == &remembered_ ? 1 : 0;
-      it = cells->erase(it);
+  for (auto it = remembered_.begin(); it != remembered_.end();) {
+    const mrpt::math::TPoint2D& point = points_[it->second];
+    if (confirmed(point.x, point.y)) {
+      ++it;
+      continue;
     }
+    ++forgotten;
+    it = forget(it);
+  }
+  for (auto it = candidates_.begin(); it != candidates_.end();) {
+    it = confirmed(it->second.point.x, it->second.point.y) ? std::next(it) : candidates_.erase(it);
   }
   return forgotten;
 }
@@ -113,16 +138,9 @@ size_t NearObstacleMemory::forgetUnconfirmed(const std::function<bool(double x, 
 std::vector<mrpt::math::TPoint2D> NearObstacleMemory::pointsNear(double x, double y, double radius) const {
   std::vector<mrpt::math::TPoint2D> points;
   walkCellsNear(remembered_, options_.cell_m, x, y, radius, [&](auto it) {
-    points.push_back(it->second.point);
+    points.push_back(points_[it->second]);
     return std::next(it);
   });
-  return points;
-}
-
-std::vector<mrpt::math::TPoint2D> NearObstacleMemory::points() const {
-  std::vector<mrpt::math::TPoint2D> points;
-  points.reserve(remembered_.size());
-  for (const auto& cell : remembered_) points.push_back(cell.second.point);
   return points;
 }
 

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace stereonav {
@@ -126,7 +127,47 @@ TEST(NearObstacleMemory, ForgetsWhatTheMapNoLongerHolds) {
   for (const auto& point : points) EXPECT_GT(point.x, 1.5);
 }
 
-TEST(NearObstacleMemory, PointsNearAPlaceAreThoseOfAllPointsWithinTheRadiusInTheSameOrder) {
+TEST(NearObstacleMemory, EveryPointStaysWithItsCellThroughForgettingAndNewSightings) {
+  NearObstacleMemory memory{NearObstacleMemoryOptions{}};
+  // A row of points, one per 5 cm cell from x = 1.00 to 1.95 m.
+  std::vector<mrpt::math::TPoint2D> row;
+  for (int i = 0; i < 20; ++i) row.emplace_back(1.0 + 0.05 * i, 0.0);
+  memory.remember(row);
+  // Forget the first, a middle and the last one.
+  const auto kept = [](double x, double) { return !(x < 1.01 || std::abs(x - 1.5) < 0.01 || x > 1.94); };
+  EXPECT_EQ(memory.forgetUnconfirmed(kept), 3u);
+  // Then see every other kept cell again, 1 cm higher.
+  std::vector<mrpt::math::TPoint2D> moved;
+  for (int i = 1; i < 19; i += 2) moved.emplace_back(1.0 + 0.05 * i, 0.01);
+  memory.remember(moved);
+
+  std::vector<mrpt::math::TPoint2D> expected;
+  for (int i = 1; i < 19; ++i) {
+    if (i != 10) expected.emplace_back(1.0 + 0.05 * i, i % 2 == 1 ? 0.01 : 0.0);
+  }
+  std::vector<mrpt::math::TPoint2D> points = memory.points();
+  ASSERT_EQ(points.size(), expected.size());
+  std::sort(points.begin(), points.end(), [](const auto& a, const auto& b) { return a.x < b.x; });
+  for (size_t k = 0; k < points.size(); ++k) {
+    EXPECT_NEAR(points[k].x, expected[k].x, 1e-12) << k;
+    EXPECT_NEAR(points[k].y, expected[k].y, 1e-12) << k;
+  }
+  EXPECT_EQ(memory.size(), expected.size());
+  // What the neighbourhood query finds is the same points, cell by cell.
+  const std::vector<mrpt::math::TPoint2D> near = memory.pointsNear(1.5, 0.0, 1.0);
+  ASSERT_EQ(near.size(), expected.size());
+  for (size_t k = 0; k < near.size(); ++k) {
+    EXPECT_NEAR(near[k].x, expected[k].x, 1e-12) << k;
+    EXPECT_NEAR(near[k].y, expected[k].y, 1e-12) << k;
+  }
+}
+
+// The 5 cm cell of a point, as (column, row).
+std::pair<long, long> cellOf(const mrpt::math::TPoint2D& point) {
+  return {std::lround(point.x / 0.05), std::lround(point.y / 0.05)};
+}
+
+TEST(NearObstacleMemory, PointsNearAPlaceAreThoseOfAllPointsWithinTheRadiusInTheOrderOfTheirCells) {
   NearObstacleMemory memory{NearObstacleMemoryOptions{}};
   // A lattice of points 7 cm apart around the origin, on both sides of zero and off the 5 cm cells'
   // centres, several of them within a few millimetres of the radius.
@@ -135,14 +176,14 @@ TEST(NearObstacleMemory, PointsNearAPlaceAreThoseOfAllPointsWithinTheRadiusInThe
     for (int j = -40; j <= 40; ++j) lattice.emplace_back(0.07 * i + 0.013, 0.07 * j - 0.021);
   }
   memory.remember(lattice);
-  const std::vector<mrpt::math::TPoint2D> all = memory.points();
   for (const mrpt::math::TPoint2D centre : {mrpt::math::TPoint2D(0.0, 0.0), mrpt::math::TPoint2D(-1.234, 0.871),
                                             mrpt::math::TPoint2D(2.6, -2.6)}) {
     for (const double radius : {0.0, 0.05, 0.5, 1.3}) {
       std::vector<mrpt::math::TPoint2D> expected;
-      for (const auto& point : all) {
+      for (const auto& point : lattice) {
         if (std::hypot(point.x - centre.x, point.y - centre.y) <= radius) expected.push_back(point);
       }
+      std::sort(expected.begin(), expected.end(), [](const auto& a, const auto& b) { return cellOf(a) < cellOf(b); });
       std::vector<mrpt::math::TPoint2D> within;
       for (const auto& point : memory.pointsNear(centre.x, centre.y, radius)) {
         if (std::hypot(point.x - centre.x, point.y - centre.y) <= radius) within.push_back(point);
