@@ -98,11 +98,13 @@ std::vector<Frontier> findFrontiers(const NavigationGrid& grid, int min_cells) {
   for (int row = 0; row < reach.height; ++row) {
     const int* label_row = regions.labels[reach.y - regions.window.y + row] + reach.x - regions.window.x;
     const uint8_t* class_row = classes[reach.y + row] + reach.x;
+    float* area_row = opening_area[row];
+    uint8_t* unknown_row = unknown_opening[row];
     for (int col = 0; col < reach.width; ++col) {
       const auto label = static_cast<size_t>(label_row[col]);
       const bool opening = regions.is_opening[label] != 0;
-      opening_area(row, col) = opening ? static_cast<float>(regions.areas[label]) : 0.0f;
-      unknown_opening(row, col) = opening && class_row[col] == NavigationGrid::kUnknown ? 1 : 0;
+      area_row[col] = opening ? static_cast<float>(regions.areas[label]) : 0.0f;
+      unknown_row[col] = opening && class_row[col] == NavigationGrid::kUnknown ? 1 : 0;
     }
   }
   // Beyond the grid's edge nothing is bordered: dilate's default border adds nothing.
@@ -120,8 +122,9 @@ std::vector<Frontier> findFrontiers(const NavigationGrid& grid, int min_cells) {
   std::vector<Frontier> frontiers;
   std::vector<cv::Point> stack;  // cells in the box's coordinates
   for (int row = 0; row < is_frontier.rows; ++row) {
+    const uint8_t* frontier_row = is_frontier[row];
     for (int col = 0; col < is_frontier.cols; ++col) {
-      if (!is_frontier(row, col)) continue;
+      if (!frontier_row[col]) continue;
       Frontier frontier;
       is_frontier(row, col) = 0;
       stack.assign(1, cv::Point(col, row));

@@ -201,7 +201,9 @@ void NavigationGrid::freeIslands(uint8_t lowest_class, uint8_t highest_class, in
   cv::inRange(cell_class_(box), lowest_class, highest_class, is_island);
   cv::Mat1i labels;
   const int count = cv::connectedComponents(is_island, labels, connectivity, CV_32S);
+  // Per label its area and the box of its cells: only the islands' boxes are looked at again.
   std::vector<int> areas(static_cast<size_t>(count), 0);
+  std::vector<cv::Rect> extents(static_cast<size_t>(count));
   for (int row = 0; row < box.height; ++row) {
     const int* label_row = labels[row];
     // Run by run of one label: a count per cell would wait on the store before it.
@@ -210,6 +212,7 @@ void NavigationGrid::freeIslands(uint8_t lowest_class, uint8_t highest_class, in
       int end = col + 1;
       while (end < box.width && label_row[end] == label) ++end;
       areas[label] += end - col;
+      extents[label] |= cv::Rect(col, row, end - col, 1);
       col = end;
     }
   }
@@ -220,20 +223,27 @@ void NavigationGrid::freeIslands(uint8_t lowest_class, uint8_t highest_class, in
   }
   static const int kNeighbours[8][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}, {1, 1}, {1, -1}, {-1, 1}, {-1, -1}};
   cv::Mat1b classes = cell_class_(box);  // a view: the islands are freed through it
-  for (int row = 0; row < box.height; ++row) {
-    for (int col = 0; col < box.width; ++col) {
-      const int label = labels(row, col);
-      if (label == 0 || !frees[label]) continue;
-      for (int i = 0; i < connectivity; ++i) {
-        const int c = col + kNeighbours[i][0], r = row + kNeighbours[i][1];
-        const bool inside = c >= 0 && r >= 0 && c < box.width && r < box.height;
-        if (!inside || (classes(r, c) != kFree && labels(r, c) != label)) frees[label] = 0;
+  for (int label = 1; label < count; ++label) {
+    if (!frees[label]) continue;
+    const cv::Rect& extent = extents[label];
+    for (int row = extent.y; row < extent.y + extent.height && frees[label]; ++row) {
+      for (int col = extent.x; col < extent.x + extent.width; ++col) {
+        if (labels(row, col) != label) continue;
+        for (int i = 0; i < connectivity; ++i) {
+          const int c = col + kNeighbours[i][0], r = row + kNeighbours[i][1];
+          const bool inside = c >= 0 && r >= 0 && c < box.width && r < box.height;
+          if (!inside || (classes(r, c) != kFree && labels(r, c) != label)) frees[label] = 0;
+        }
       }
     }
   }
-  for (int row = 0; row < box.height; ++row) {
-    for (int col = 0; col < box.width; ++col) {
-      if (frees[labels(row, col)]) classes(row, col) = kFree;
+  for (int label = 1; label < count; ++label) {
+    if (!frees[label]) continue;
+    const cv::Rect& extent = extents[label];
+    for (int row = extent.y; row < extent.y + extent.height; ++row) {
+      for (int col = extent.x; col < extent.x + extent.width; ++col) {
+        if (labels(row, col) == label) classes(row, col) = kFree;
+      }
     }
   }
 }
