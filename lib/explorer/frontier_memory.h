@@ -3,8 +3,8 @@
 #include <mrpt/math/TPoint2D.h>
 #include <mrpt/poses/CPose2D.h>
 
-#include <map>
-#include <set>
+#include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include "explorer/explorer_options.h"
@@ -66,8 +66,8 @@ class FrontierMemory {
   ExplorerOptions options_;
   WorldCellLattice lattice_;
   std::vector<mrpt::poses::CPose2D> looked_from_;
-  std::set<WorldCell> dropped_;
-  std::map<WorldCell, int> close_views_;  // per cell: the maps in which it was in plain sight up close
+  std::unordered_set<WorldCell, WorldCellLattice::CellHash> dropped_;
+  std::unordered_map<WorldCell, int, WorldCellLattice::CellHash> close_views_;  // per cell: the maps in which it was in plain sight up close
   bool second_pass_ = false;
 };
 

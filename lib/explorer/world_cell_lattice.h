@@ -3,6 +3,8 @@
 #include <opencv2/core.hpp>
 
 #include <cmath>
+#include <cstdint>
+#include <functional>
 #include <utility>
 
 #include "occupancy_grid/grid_frame.h"
@@ -16,6 +18,14 @@ namespace stereonav {
 class WorldCellLattice {
  public:
   using Cell = std::pair<long, long>;
+  // For hash sets of cells: the memories look cells up every frame, and trees of a hundred
+  // thousand cells cost a cache miss per level.
+  struct CellHash {
+    size_t operator()(const Cell& cell) const {
+      return std::hash<uint64_t>()(static_cast<uint64_t>(cell.first) * 0x9e3779b97f4a7c15ULL ^
+                                   static_cast<uint64_t>(cell.second));
+    }
+  };
 
   // The first frame anchors the lattice; later ones are assumed whole cells off it.
   void anchor(const GridFrame& frame) {
