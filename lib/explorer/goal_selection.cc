@@ -61,8 +61,9 @@ std::vector<GoalCell> GoalSelection::goals(const NavigationGrid& grid, const Cos
   }
   // Without a distance cost a frontier's discs all stamp its seed cost, and a cell the disc of the
   // frontier's cell before covered holds that cost or less already: a cell next to the one before
-  // stamps only the part of its disc the other's missed. Frontier cells come row by row, so this
-  // is mostly one cell at each end of the disc's rows instead of the whole disc.
+  // stamps only the part of its disc the other's missed. The frontier finder's depth-first flood
+  // gives a frontier's cells mostly one step apart: 23 cells of a 377-cell disc at 5 cm for a step
+  // along a row or a column.
   const bool flat = distance_cost == 0.0;
   const auto halfWidth = [&](int dr) {
     for (const Run& run : disc) {
