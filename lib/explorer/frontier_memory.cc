@@ -27,7 +27,7 @@ void FrontierMemory::countCloseViews(const NavigationGrid& grid, const std::vect
   };
   for (const Frontier& frontier : frontiers) {
     for (const cv::Point& cell : frontier.cells) {
-      if (in_plain_sight(cell)) ++close_views_[worldCell(grid, cell.x, cell.y)];
+      if (in_plain_sight(cell)) ++close_views_.at(worldCell(grid, cell.x, cell.y));
     }
   }
 }
@@ -76,9 +76,9 @@ bool FrontierMemory::isDropped(const NavigationGrid& grid, int col, int row) con
     if (withinView(pose, x, y, options_.looked_at_range_m, half_view)) return true;
   }
   const WorldCell key = worldCell(grid, col, row);
-  if (dropped_.count(key) > 0) return true;
-  const auto views = close_views_.find(key);
-  return views != close_views_.end() && views->second >= options_.resolving_views;
+  if (dropped_.get(key) != 0) return true;
+  const int views = close_views_.get(key);
+  return views > 0 && views >= options_.resolving_views;
 }
 
 std::vector<Frontier> FrontierMemory::withoutDropped(const NavigationGrid& grid, std::vector<Frontier> frontiers) const {

@@ -3,8 +3,7 @@
 #include <mrpt/math/TPoint2D.h>
 #include <mrpt/poses/CPose2D.h>
 
-#include <unordered_map>
-#include <unordered_set>
+#include <cstdint>
 #include <vector>
 
 #include "explorer/explorer_options.h"
@@ -59,15 +58,15 @@ class FrontierMemory {
 
   // The robot looked from `pose` without resolving what it faced.
   void lookedFrom(const mrpt::poses::CPose2D& pose) { looked_from_.push_back(pose); }
-  void drop(const NavigationGrid& grid, const cv::Point& cell) { dropped_.insert(worldCell(grid, cell.x, cell.y)); }
+  void drop(const NavigationGrid& grid, const cv::Point& cell) { dropped_.at(worldCell(grid, cell.x, cell.y)) = 1; }
   size_t looks() const { return looked_from_.size(); }
 
  private:
   ExplorerOptions options_;
   WorldCellLattice lattice_;
   std::vector<mrpt::poses::CPose2D> looked_from_;
-  std::unordered_set<WorldCell, WorldCellLattice::CellHash> dropped_;
-  std::unordered_map<WorldCell, int, WorldCellLattice::CellHash> close_views_;  // per cell: the maps in which it was in plain sight up close
+  WorldCellMap<uint8_t> dropped_;
+  WorldCellMap<int> close_views_;  // per cell: the maps in which it was in plain sight up close
   bool second_pass_ = false;
 };
 

@@ -3,7 +3,7 @@
 #include <opencv2/core.hpp>
 
 #include <optional>
-#include <unordered_set>
+#include <set>
 #include <vector>
 
 #include "explorer/cost_to_go_field.h"
@@ -56,7 +56,7 @@ class GoalSelection {
   ExplorerOptions options_;
   std::optional<cv::Point2d> target_;
   int target_label_ = -1;
-  std::unordered_set<FrontierMemory::WorldCell, WorldCellLattice::CellHash> target_cells_;
+  std::set<FrontierMemory::WorldCell> target_cells_;
 };
 
 }  // namespace stereonav

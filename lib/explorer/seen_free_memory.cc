@@ -38,7 +38,9 @@ void SeenFreeMemory::update(const DisparityTaggedGrid& grid, const mrpt::poses::
       if (withinView(pose, x, y, options_.range_m, half_view) &&
           alongStraightLine(cv::Point(robot_col, robot_row), cv::Point(col, row), passes)) {
         const WorldCellLattice::Cell cell = lattice_.cellAt(x, y);
-        if (cells_.insert(cell).second) centres_.push_back(lattice_.centre(cell));
+        uint8_t& remembered = cells_.at(cell);
+        if (!remembered) centres_.push_back(lattice_.centre(cell));
+        remembered = 1;
       }
     }
   }

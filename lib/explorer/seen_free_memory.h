@@ -3,7 +3,7 @@
 #include <mrpt/poses/CPose2D.h>
 #include <opencv2/core.hpp>
 
-#include <unordered_set>
+#include <cstdint>
 #include <vector>
 
 #include "explorer/world_cell_lattice.h"
@@ -49,7 +49,7 @@ class SeenFreeMemory {
  private:
   SeenFreeMemoryOptions options_;
   WorldCellLattice lattice_;
-  std::unordered_set<WorldCellLattice::Cell, WorldCellLattice::CellHash> cells_;
+  WorldCellMap<uint8_t> cells_;  // 1 at the remembered cells
   // The planner reads every remembered cell every frame: a list, kept as cells are added (none
   // is ever removed), instead of a walk over the set, whose nodes grow with the floor explored.
   std::vector<cv::Point2d> centres_;
