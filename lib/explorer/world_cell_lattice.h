@@ -51,15 +51,11 @@ class WorldCellMap {
  public:
   using Cell = WorldCellLattice::Cell;
 
-  T get(const Cell& cell) const {
-    const long col = cell.first - first_col_, row = cell.second - first_row_;
-    if (col < 0 || row < 0 || col >= cols_ || row >= rows_) return T{};
-    return values_[static_cast<size_t>(row * cols_ + col)];
-  }
+  T get(const Cell& cell) const { return holds(cell) ? values_[indexOf(cell)] : T{}; }
   // The cell's value, to be set.
   T& at(const Cell& cell) {
     include(cell);
-    return values_[static_cast<size_t>((cell.second - first_row_) * cols_ + cell.first - first_col_)];
+    return values_[indexOf(cell)];
   }
   // Whether no cell was ever set (at() was never called).
   bool empty() const { return values_.empty(); }
@@ -71,13 +67,23 @@ class WorldCellMap {
  private:
   static constexpr long kBlock = 64;  // cells added beyond the one that needs them, each way
 
-  void include(const Cell& cell) {
+  bool holds(const Cell& cell) const {
     const long col = cell.first - first_col_, row = cell.second - first_row_;
-    if (!values_.empty() && col >= 0 && row >= 0 && col < cols_ && row < rows_) return;
-    const long first_col = values_.empty() ? cell.first - kBlock : std::min(first_col_, cell.first - kBlock);
-    const long first_row = values_.empty() ? cell.second - kBlock : std::min(first_row_, cell.second - kBlock);
-    const long last_col = values_.empty() ? cell.first + kBlock : std::max(first_col_ + cols_ - 1, cell.first + kBlock);
-    const long last_row = values_.empty() ? cell.second + kBlock : std::max(first_row_ + rows_ - 1, cell.second + kBlock);
+    return col >= 0 && row >= 0 && col < cols_ && row < rows_;
+  }
+  size_t indexOf(const Cell& cell) const {
+    return static_cast<size_t>((cell.second - first_row_) * cols_ + cell.first - first_col_);
+  }
+  void include(const Cell& cell) {
+    if (holds(cell)) return;
+    long first_col = cell.first - kBlock, first_row = cell.second - kBlock;
+    long last_col = cell.first + kBlock, last_row = cell.second + kBlock;
+    if (!values_.empty()) {
+      first_col = std::min(first_col, first_col_);
+      first_row = std::min(first_row, first_row_);
+      last_col = std::max(last_col, first_col_ + cols_ - 1);
+      last_row = std::max(last_row, first_row_ + rows_ - 1);
+    }
     const long cols = last_col - first_col + 1, rows = last_row - first_row + 1;
     std::vector<T> values(static_cast<size_t>(cols * rows), T{});
     for (long r = 0; r < rows_; ++r) {
