@@ -6,36 +6,45 @@
 #include <stdexcept>
 
 namespace stereonav {
+namespace {
+
+// One row of cells: traversable (NavigationGrid::fits) and the step weight, through pointers the
+// byte stores cannot alias and without traps (CMakeLists.txt), so that the loop runs four cells at
+// a time: it runs over every free cell's box for every plan. Built for AVX2 as well (chosen at
+// load time); not with FMA, whose fused rounding would change the weights from one machine to
+// another.
+__attribute__((target_clones("avx2", "default")))
+void traversableRow(const float* __restrict clearance, const float* __restrict distance, int width,
+                    double body_radius, double repulsion_distance, double repulsion_weight, bool repelled,
+                    uint8_t* __restrict traversable, float* __restrict weight) {
+  for (int col = 0; col < width; ++col) {
+    const bool fits = clearance[col] + 1e-6 >= body_radius;
+    traversable[col] = fits ? 1 : 0;
+    // Steps are taken between traversable cells only.
+    const double beyond = distance[col] - body_radius;
+    const double s = std::min(1.0, std::max(0.0, 1.0 - beyond / repulsion_distance));
+    const float repelling = static_cast<float>(1.0 + repulsion_weight * s * s);
+    weight[col] = fits && repelled ? repelling : 1.0f;
+  }
+}
+
+}  // namespace
+
 CostToGoField::CostToGoField(const NavigationGrid& grid, const CostToGoOptions& options)
     : grid_(grid),
       box_(grid.freeCells()),
       // The weight 1 + repulsion_weight * s^2 for s in [0, 1].
       min_weight_(1.0 + std::min(0.0, options.repulsion_weight)),
       max_weight_(1.0 + std::max(0.0, options.repulsion_weight)),
-      traversable_(box_.size(), uint8_t{0}),
-      step_weight_(box_.size(), 1.0f) {
+      // Every cell is written below.
+      traversable_(box_.size()),
+      step_weight_(box_.size()) {
   if (!(min_weight_ > 0.0)) throw std::invalid_argument("cost-to-go: repulsion_weight must be above -1");
   if (box_.empty()) return;
-  // NavigationGrid::fits and the weight, row by row without branches: the loop runs over every
-  // free cell's box for every plan.
   const cv::Mat1f clearances = grid.clearances()(box_), distances = grid.obstacleDistances()(box_);
-  const double body_radius = options.body_radius_m;
-  const double repulsion_distance = options.repulsion_distance_m, repulsion_weight = options.repulsion_weight;
-  const bool repelled = repulsion_distance > 0.0;
   for (int row = 0; row < box_.height; ++row) {
-    const float* clearance = clearances[row];
-    const float* distance = distances[row];
-    uint8_t* traversable = traversable_[row];
-    float* weight = step_weight_[row];
-    for (int col = 0; col < box_.width; ++col) {
-      const bool fits = clearance[col] + 1e-6 >= body_radius;
-      traversable[col] = fits ? 1 : 0;
-      // Steps are taken between traversable cells only.
-      const double beyond = distance[col] - body_radius;
-      const double s = std::min(1.0, std::max(0.0, 1.0 - beyond / repulsion_distance));
-      const float repelling = static_cast<float>(1.0 + repulsion_weight * s * s);
-      weight[col] = fits && repelled ? repelling : 1.0f;
-    }
+    traversableRow(clearances[row], distances[row], box_.width, options.body_radius_m, options.repulsion_distance_m,
+                   options.repulsion_weight, options.repulsion_distance_m > 0.0, traversable_[row], step_weight_[row]);
   }
 }
 
