@@ -102,7 +102,9 @@ std::vector<GoalCell> GoalSelection::goals(const NavigationGrid& grid, const Cos
   reached &= box;
   if (reached.empty()) return {};
   const cv::Mat1b traversable = field.traversableCells()(reached - box.tl());
-  cv::Mat1d seed(reached.size(), std::numeric_limits<double>::infinity());
+  // A cell's seed is read only once it has a label: the seeds are not filled first (a box of
+  // doubles per plan).
+  cv::Mat1d seed(reached.size());
   cv::Mat1i label(reached.size(), -1);
   const auto stamp = [&](const cv::Point& cell, int dr, int first_dc, int last_dc, double seed_cost,
                          const double* costs, int frontier) {
@@ -116,7 +118,7 @@ std::vector<GoalCell> GoalSelection::goals(const NavigationGrid& grid, const Cos
     for (int c = begin; c < end; ++c) {
       if (!traversable_row[c]) continue;
       const double cost = seed_cost + costs[c - first];
-      if (cost < seed_row[c]) {
+      if (label_row[c] < 0 || cost < seed_row[c]) {
         seed_row[c] = cost;
         label_row[c] = frontier;
       }
