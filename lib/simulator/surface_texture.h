@@ -60,6 +60,9 @@ class AlbedoSampler {
 
   std::vector<size_t> noisy_;       // the queries that need the noise
   std::vector<size_t> points_end_;  // and where each one's lattice points end
+  // Per noisy query, kNoiseLanes spare lanes at the end: its texture's mean, contrast and square
+  // root of its octave count, its weighted sum of noise, and its albedo.
+  std::vector<double> means_, contrasts_, octave_roots_, sums_, noisy_albedos_;
   // The lattice points (x, y, seed) of every octave of those queries, their weights and noise;
   // kNoiseLanes spare lanes at the end.
   std::vector<double> x_, y_, weight_, noise_;
