@@ -10,6 +10,14 @@
 
 namespace stereonav {
 
+// std::lround(x) for |x| < 2^52, inline (a call into libm per sample was most of a line's cost):
+// there the truncation is exact, and so is the fraction it leaves.
+inline long roundHalfAwayFromZero(double x) {
+  const long whole = static_cast<long>(x);
+  const double fraction = x - static_cast<double>(whole);
+  return whole + (fraction >= 0.5 ? 1 : 0) - (fraction <= -0.5 ? 1 : 0);
+}
+
 // Whether `passes(col, row)` holds for every cell the straight line from cell `from` to cell `to`
 // crosses between them (sampled every half cell; the end cells themselves are not tested).
 template <typename CellTest>
@@ -17,8 +25,8 @@ bool alongStraightLine(const cv::Point& from, const cv::Point& to, const CellTes
   const int steps = 2 * std::max(std::abs(to.x - from.x), std::abs(to.y - from.y));
   for (int step = 1; step < steps; ++step) {
     const double t = step / static_cast<double>(steps);
-    if (!passes(static_cast<int>(std::lround(from.x + (to.x - from.x) * t)),
-                static_cast<int>(std::lround(from.y + (to.y - from.y) * t)))) {
+    if (!passes(static_cast<int>(roundHalfAwayFromZero(from.x + (to.x - from.x) * t)),
+                static_cast<int>(roundHalfAwayFromZero(from.y + (to.y - from.y) * t)))) {
       return false;
     }
   }
