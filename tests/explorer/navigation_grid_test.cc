@@ -295,5 +295,28 @@ TEST(NavigationGridTest, ObstaclesSeenOnlyAtLowDisparityAreImprecise) {
   EXPECT_NEAR(grid.obstacleDistance(8, 5), 0.15, 1e-6);
 }
 
+TEST(NavigationGridTest, EveryOccupancyValueTakesThePapersClassAndOnlyLowDisparityObstaclesAreImprecise) {
+  // Each row holds every value G = 0..255 and three more (a row's end after whole vectors), with
+  // no tag, a tag below precise_min_disparity, and one at it.
+  const int width = 259;
+  TestGrid cells(width, 3);
+  for (int col = 0; col < width; ++col) cells.fill(col, 0, col, 2, static_cast<uint8_t>(col % 256));
+  cells.tag(0, 0, width - 1, 0, DisparityTaggedGrid::kNoTag).tag(0, 1, width - 1, 1, 2.5f).tag(0, 2, width - 1, 2, 3.0f);
+  NavigationGridOptions options;
+  options.precise_min_disparity = 3.0f;
+  options.sure_obstacle_g = 200;
+  const NavigationGrid grid(cells.grid(), {}, options);
+  for (int row = 0; row < 3; ++row) {
+    for (int col = 0; col < width; ++col) {
+      const int g = col % 256;
+      // Free below 50, occupied above 150 (paper section 3.4), unknown between.
+      uint8_t expected = g < 50 ? NavigationGrid::kFree : g > 150 ? NavigationGrid::kOccupied : NavigationGrid::kUnknown;
+      if (expected == NavigationGrid::kOccupied && row == 1) expected = NavigationGrid::kImprecise;
+      EXPECT_EQ(grid.cellClass(col, row), expected) << "G " << g << ", row " << row;
+      EXPECT_EQ(grid.mapHoldsObstacle(grid.centreX(col), grid.centreY(row)), g >= 200) << "G " << g << ", row " << row;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace stereonav
