@@ -27,21 +27,22 @@ cv::Mat1f distanceToBlocked(const cv::Mat1b& classes, uint8_t clear_below, const
 }
 
 // One row's cells from `first` to `end` of the map classified (`classes`) and marked sure
-// obstacles or not (`sure`), OccupancyScale::classify written with comparisons instead of a table
-// so that the loop runs many cells at a time: a table's loads, a branch on the occupied class and
-// the reloads of a bound the byte stores might alias took about 3% of an office's exploration,
-// cell by cell. Built for AVX2 as well (chosen at load time).
+// obstacles or not (`sure`), through restrict pointers so that the loop runs many cells at a
+// time: a table's loads, a branch on the occupied class and the reloads of a bound the byte
+// stores might alias took about 3% of an office's exploration, cell by cell. Built for AVX2 as
+// well (chosen at load time).
 __attribute__((target_clones("avx2", "default")))
-void classifyRow(const uint8_t* __restrict g, const float* __restrict tag, int first, int end, int free_below,
-                 int occupied_above, int sure_obstacle_g, float precise_min_disparity, uint8_t* __restrict classes,
+void classifyRow(const uint8_t* __restrict g, const float* __restrict tag, int first, int end, OccupancyScale scale,
+                 int sure_obstacle_g, float precise_min_disparity, uint8_t* __restrict classes,
                  uint8_t* __restrict sure) {
   for (int col = first; col < end; ++col) {
-    const int value = g[col];
-    const bool occupied = value > occupied_above;
+    const CellClass cell_class = scale.classify(g[col]);
     const bool imprecise = tag[col] != DisparityTaggedGrid::kNoTag && tag[col] < precise_min_disparity;
     const uint8_t occupied_class = imprecise ? NavigationGrid::kImprecise : NavigationGrid::kOccupied;
-    classes[col] = value < free_below ? NavigationGrid::kFree : occupied ? occupied_class : NavigationGrid::kUnknown;
-    sure[col] = value >= sure_obstacle_g ? 1 : 0;
+    classes[col] = cell_class == CellClass::kFree      ? NavigationGrid::kFree
+                   : cell_class == CellClass::kOccupied ? occupied_class
+                                                        : NavigationGrid::kUnknown;
+    sure[col] = g[col] >= sure_obstacle_g ? 1 : 0;
   }
 }
 
@@ -71,9 +72,8 @@ NavigationGrid::NavigationGrid(const DisparityTaggedGrid& grid, const std::vecto
   const CellWindow& written = grid.writtenCells();
   const OccupancyScale& scale = grid.scale();
   for (int row = written.row_begin; row < written.row_end; ++row) {
-    classifyRow(grid.occupancyRow(row), grid.tagRow(row), written.col_begin, written.col_end, scale.free_below,
-                scale.occupied_above, options.sure_obstacle_g, options.precise_min_disparity, cell_class_[row],
-                sure_obstacle_[row]);
+    classifyRow(grid.occupancyRow(row), grid.tagRow(row), written.col_begin, written.col_end, scale,
+                options.sure_obstacle_g, options.precise_min_disparity, cell_class_[row], sure_obstacle_[row]);
   }
   resolved_cells_ = cv::Rect(written.col_begin, written.row_begin, written.col_end - written.col_begin,
                              written.row_end - written.row_begin);
